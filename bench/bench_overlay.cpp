@@ -1,0 +1,381 @@
+// The overlay benchmark against peers: BM_Overlay<runner>/<workload>/<op>/<n>, where a
+// runner is a peer library (GEOS, BoostGeometry, Clipper, CgalEpeck) or an mkbool kernel
+// (mkbool:<name>, every name in mk::kernel_names()), on the same two inputs.
+// [BRIEF §6] (workloads, peers, the bar) [MK89 §4.3] (cost of the intersection step)
+// Preconditions: built in Release; peers compiled in when found (MK_HAVE_GEOS, ...).
+//
+// Counters: vertices_in (A and B), vertices_out, crossings (mkbool only: peers do not say),
+// area_rel_diff = (area - exact) / |exact| against mkbool's exact area of the same case
+// (absolute difference when the exact area is 0). The label names the reference kernel.
+// Benchmarks measure speed; the area difference is reported as data, never asserted.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <initializer_list>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <vector>
+
+#include "api/mkbool.hpp"
+#include "arithmetic/kernels/double_kernel.hpp"
+#include "arithmetic/kernels/exact_kernel.hpp"
+#include "arithmetic/kernels/filtered_kernels.hpp"
+#include "arithmetic/kernels/rational_kernel.hpp"
+#ifdef MK_WITH_CGAL
+#include "arithmetic/kernels/cgal_kernel.hpp"
+#endif
+#include "bench/peers/mkbool_area.hpp"
+#include "bench/peers/peers.hpp"
+#include "bench/workloads.hpp"
+#include "core/boolean_op.hpp"
+
+namespace mk::bench {
+
+namespace {
+
+// Sizes: vertices per polygon for blob and star, squares per grid for checkerboard, rings
+// per polygon for nested squares.
+const std::vector<std::pair<WorkloadKind, std::vector<std::size_t>>> kSizes = {
+    {WorkloadKind::blob, {1'000, 10'000, 100'000, 1'000'000}},
+    {WorkloadKind::star, {100, 1'000, 10'000}},
+    {WorkloadKind::checkerboard, {100, 1'000, 10'000, 100'000}},
+    {WorkloadKind::nested_squares, {10, 100, 1'000}},
+};
+
+constexpr Operation kOperations[] = {Operation::intersection, Operation::union_, Operation::difference,
+                                     Operation::symmetric_difference};
+
+// The default run ends in about ten minutes on the project's 2-core machine:
+//  - at the largest size of each workload only the intersection runs (the operation of
+//    the bar in BRIEF §6); smaller sizes run all four operations;
+//  - runners that take minutes at a size are left out there (kSizeLimits);
+//  - at the largest sizes every runner is measured once (one iteration, no repetitions),
+//    except, on the bar's workloads blob and star, the fast peers and the exact kernel.
+// --overlay_full lifts the first two (every operation at every size for every runner).
+// Measured on this machine (intersection, one run, machine shared with other jobs):
+//   mkbool:rational  blob 1e5 2.9 s, 1e6 49 s; star 1e3 0.3 s, 1e4 > 10 min;
+//                    checkerboard 1e3 0.4 s, 1e4 12 s; nested squares 1e2 0.2 s
+//   other kernels    checkerboard 1e5 about 17 s each, like exact (which runs there)
+//   BoostGeometry    star 1e4 > 120 s (BRIEF §6); checkerboard 1e3 0.8 s, growing as n^2
+// A runner not named here (for example a new kernel) runs at every size.
+struct SizeLimit {
+  std::string_view runner;
+  WorkloadKind kind;
+  std::size_t max_n;
+};
+constexpr SizeLimit kSizeLimits[] = {
+    {"mkbool:rational", WorkloadKind::blob, 10'000},
+    {"mkbool:rational", WorkloadKind::star, 1'000},
+    {"mkbool:rational", WorkloadKind::checkerboard, 1'000},
+    {"mkbool:rational", WorkloadKind::nested_squares, 100},
+    {"mkbool:adaptive", WorkloadKind::checkerboard, 10'000},
+    {"mkbool:interval", WorkloadKind::checkerboard, 10'000},
+    {"mkbool:cgal", WorkloadKind::checkerboard, 10'000},
+    {"mkbool:double", WorkloadKind::checkerboard, 10'000},
+    {"BoostGeometry", WorkloadKind::star, 1'000},
+    {"BoostGeometry", WorkloadKind::checkerboard, 1'000},
+};
+
+constexpr std::string_view kRepeatedAtLargest[] = {"GEOS", "BoostGeometry", "Clipper", "mkbool:exact"};
+
+bool full_run = false;  // --overlay_full
+
+bool within_limits(std::string_view runner, WorkloadKind kind, std::size_t n) {
+  if (full_run) return true;
+  for (const SizeLimit& l : kSizeLimits) {
+    if (l.runner == runner && l.kind == kind && n > l.max_n) return false;
+  }
+  return true;
+}
+
+std::size_t largest_size(WorkloadKind kind) {
+  for (const auto& [k, sizes] : kSizes) {
+    if (k == kind) return sizes.back();
+  }
+  return 0;
+}
+
+bool runs_operation(WorkloadKind kind, std::size_t n, Operation op) {
+  return full_run || op == Operation::intersection || n < largest_size(kind);
+}
+
+bool measured_once(std::string_view runner, WorkloadKind kind, std::size_t n) {
+  if (n < largest_size(kind)) return false;
+  if (kind != WorkloadKind::blob && kind != WorkloadKind::star) return true;
+  for (const std::string_view r : kRepeatedAtLargest) {
+    if (r == runner) return false;
+  }
+  return true;
+}
+
+// Joins strings. ("literal" + std::string) trips GCC 12's -Wrestrict false positive.
+std::string join(std::initializer_list<std::string_view> parts) {
+  std::string s;
+  for (const std::string_view p : parts) s.append(p);
+  return s;
+}
+
+std::string runner_name(std::string_view kernel) { return join({"mkbool:", kernel}); }
+
+struct Case {
+  WorkloadKind kind;
+  std::size_t n;
+  Operation op;
+};
+
+// The workload of the benchmark being run. Benchmarks are registered (and so run, with
+// their repetitions) grouped by workload and size, so one slot avoids regenerating inputs
+// without holding every size in memory at once.
+const Workload& workload(WorkloadKind kind, std::size_t n) {
+  static std::optional<Workload> current;
+  if (!current || current->kind != kind || current->n != n) {
+    current.reset();
+    current = make_workload(kind, n);
+  }
+  return *current;
+}
+
+// The exact kernel that gives the reference area: the first exact name in kernel_names()
+// (they are listed fastest exact first, so "exact" once it is built, else "rational").
+std::string reference_kernel() {
+  for (const std::string_view k : kernel_names()) {
+    if (is_exact_kernel(k)) return std::string(k);
+  }
+  return {};
+}
+
+using CaseKey = std::tuple<WorkloadKind, std::size_t, Operation>;
+
+// Reference areas known so far. The reference kernel's own benchmark fills its entries
+// (it is registered before the peers), so the reference costs no extra run unless that
+// benchmark is filtered out.
+std::map<CaseKey, std::optional<double>>& reference_cache() {
+  static std::map<CaseKey, std::optional<double>> cache;
+  return cache;
+}
+
+std::optional<double> compute_reference(const Case& c, const std::string& kernel);
+
+// mkbool's exact area of a case, rounded to the nearest double, computed once. None when no
+// exact kernel may run at this size (see kSizeLimits) or the result is unbounded.
+std::optional<double> reference_area(const Case& c) {
+  auto& cache = reference_cache();
+  const CaseKey key{c.kind, c.n, c.op};
+  if (const auto it = cache.find(key); it != cache.end()) return it->second;
+  std::optional<double> area;
+  const std::string kernel = reference_kernel();
+  if (!kernel.empty() && within_limits(runner_name(kernel), c.kind, c.n)) area = compute_reference(c, kernel);
+  if (area && std::isnan(*area)) area.reset();
+  return cache[key] = area;
+}
+
+void set_common_counters(benchmark::State& state, const Case& c, std::size_t vertices_out, double area) {
+  state.counters["vertices_in"] = static_cast<double>(workload(c.kind, c.n).vertices());
+  state.counters["vertices_out"] = static_cast<double>(vertices_out);
+  if (const auto ref = reference_area(c)) {
+    state.counters["area_rel_diff"] = *ref != 0 ? (area - *ref) / std::abs(*ref) : area - *ref;
+    state.SetLabel(join({"ref=", reference_kernel()}));
+  } else {
+    state.SetLabel("no exact reference at this size");
+  }
+}
+
+template <class Library>
+void bm_peer(benchmark::State& state, const Case& c) {
+  const Workload& w = workload(c.kind, c.n);
+  try {
+    const PeerOverlay<Library> peer(w.a_ogc, w.b_ogc);
+    OverlayResult r;
+    for (auto _ : state) {
+      r = peer.run(c.op);
+      benchmark::DoNotOptimize(r);
+    }
+    set_common_counters(state, c, r.vertices, r.area);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+  }
+}
+
+// An mkbool kernel known here at compile time: boolean_op<K> directly, inputs converted to
+// the kernel's points outside the timed region.
+template <Kernel K>
+void bm_mkbool(benchmark::State& state, const Case& c) {
+  const Workload& w = workload(c.kind, c.n);
+  const auto a = to_kernel_polygon<K>(w.a);
+  const auto b = to_kernel_polygon<K>(w.b);
+  const Options options{c.op, true, EfOrganisation::hash, PairSearch::sweep};
+  try {
+    Stats stats;
+    std::optional<double> area;
+    for (auto _ : state) {
+      const BooleanResult<K> r = boolean_op<K>(a, b, options);
+      benchmark::DoNotOptimize(r.cycles.data());
+      stats = r.stats;
+      if (!area) {  // the result is the same every iteration: its area is taken once
+        state.PauseTiming();
+        area = result_area(r);
+        state.ResumeTiming();
+      }
+    }
+    if (K::name == reference_kernel() && area && !std::isnan(*area)) {
+      reference_cache().try_emplace(CaseKey{c.kind, c.n, c.op}, *area);
+    }
+    state.counters["crossings"] = static_cast<double>(stats.crossings);
+    set_common_counters(state, c, stats.vertices_out, area.value_or(std::numeric_limits<double>::quiet_NaN()));
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+  }
+}
+
+// Any other kernel in kernel_names(), through the runtime API: the time is the API's op_ns
+// (the operation alone; input conversion and output assembly are not counted).
+void bm_mkbool_by_name(benchmark::State& state, const Case& c, const std::string& kernel) {
+  const Workload& w = workload(c.kind, c.n);
+  try {
+    BooleanStats stats;
+    for (auto _ : state) {
+      stats = compute(w.a, w.b, BooleanOptions{c.op, true, kernel}).stats;
+      state.SetIterationTime(static_cast<double>(stats.op_ns) * 1e-9);
+    }
+    state.counters["crossings"] = static_cast<double>(stats.crossings);
+    set_common_counters(state, c, stats.vertices_out, stats.area.value_or(std::numeric_limits<double>::quiet_NaN()));
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+  }
+}
+
+struct Runner {
+  std::string name;
+  std::function<void(benchmark::State&, const Case&)> run;
+  bool manual_time = false;  // the runner reports its own time (mk::compute's op_ns)
+};
+
+// The kernels timed through boolean_op<K> directly. A kernel in kernel_names() but not in
+// this list is still benchmarked, through mk::compute (bm_mkbool_by_name); adding it here
+// (and its header above) only lowers the harness's overhead per iteration.
+template <Kernel... Ks>
+struct KernelList {};
+using TemplateKernels = KernelList<ExactKernel, RationalKernel, AdaptiveKernel, IntervalKernel,
+#ifdef MK_WITH_CGAL
+                                   CgalKernel,
+#endif
+                                   DoubleKernel>;
+
+template <Kernel... Ks>
+bool add_template_runner(KernelList<Ks...>, std::string_view kernel, const std::string& name, std::vector<Runner>& out) {
+  return ((kernel == Ks::name ? (out.push_back({name, bm_mkbool<Ks>}), true) : false) || ...);
+}
+
+template <Kernel... Ks>
+std::optional<double> reference_by_template(KernelList<Ks...>, const Case& c, const std::string& kernel) {
+  std::optional<double> area;
+  const auto run = [&]<Kernel K>(K) {
+    if constexpr (K::is_exact) {
+      const Workload& w = workload(c.kind, c.n);
+      area = exact_area_nearest(boolean_op<K>(w.a, w.b, Options{c.op, true, EfOrganisation::hash, PairSearch::sweep}));
+    }
+  };
+  ((kernel == Ks::name ? (run(Ks{}), true) : false) || ...);
+  return area;
+}
+
+std::optional<double> compute_reference(const Case& c, const std::string& kernel) {
+  if (auto area = reference_by_template(TemplateKernels{}, c, kernel)) return area;
+  const Workload& w = workload(c.kind, c.n);
+  return compute(w.a, w.b, BooleanOptions{c.op, true, kernel}).stats.area;
+}
+
+std::vector<Runner> runners() {
+  std::vector<Runner> out;
+  std::string names;
+  for (const std::string_view k : kernel_names()) names.append(names.empty() ? "" : ",").append(k);
+  benchmark::AddCustomContext("mkbool_kernels", names);
+  benchmark::AddCustomContext("mkbool_reference_kernel", reference_kernel());
+  benchmark::AddCustomContext("overlay_full", full_run ? "true" : "false");
+  for (const std::string_view k : kernel_names()) {
+    const std::string name = runner_name(k);
+    if (!add_template_runner(TemplateKernels{}, k, name, out)) {
+      const auto by_name = [kernel = std::string(k)](benchmark::State& s, const Case& c) {
+        bm_mkbool_by_name(s, c, kernel);
+      };
+      out.push_back({name, by_name, true});
+    }
+  }
+  // The peers come after the kernels: the reference kernel's benchmark then fills the
+  // reference areas they are compared with.
+  const auto add_peer = [&]<class Library>(Library) {
+    out.push_back({std::string(Library::name), bm_peer<Library>});
+    benchmark::AddCustomContext(std::string(Library::name) + "_version", PeerOverlay<Library>::version());
+  };
+#ifdef MK_HAVE_GEOS
+  add_peer(Geos{});
+#endif
+#ifdef MK_HAVE_BOOST_GEOMETRY
+  add_peer(BoostGeometry{});
+#endif
+#ifdef MK_HAVE_CLIPPER
+  add_peer(Clipper{});
+#endif
+#ifdef MK_HAVE_CGAL
+  add_peer(CgalEpeck{});
+#endif
+  (void)add_peer;
+  return out;
+}
+
+void register_benchmarks() {
+  const auto all = runners();
+  for (const auto& [kind, sizes] : kSizes) {
+    for (const std::size_t n : sizes) {
+      for (const Operation op : kOperations) {
+        for (const Runner& r : all) {
+          if (!within_limits(r.name, kind, n) || !runs_operation(kind, n, op)) continue;
+          const Case c{kind, n, op};
+          const std::string name = join({"BM_Overlay<", r.name, ">/", workload_name(kind), "/", operation_name(op),
+                                         "/", std::to_string(n)});
+          auto* b = benchmark::RegisterBenchmark(name.c_str(), [run = r.run, c](benchmark::State& s) { run(s, c); });
+          b->Unit(benchmark::kMillisecond);
+          if (r.manual_time) {
+            b->UseManualTime();
+          } else {
+            b->UseRealTime();  // CGAL runs in a thread of its own: CPU time would miss it
+          }
+          if (measured_once(r.name, kind, n)) {
+            b->Iterations(1)->Repetitions(1);
+          } else {
+            b->MinTime(0.1);
+          }
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+}  // namespace mk::bench
+
+int main(int argc, char** argv) {
+  // Our own flag first: Google Benchmark reports flags it does not know.
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--overlay_full") == 0) {
+      mk::bench::full_run = true;
+    } else {
+      argv[kept++] = argv[i];
+    }
+  }
+  argc = kept;
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  mk::bench::register_benchmarks();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,183 @@
+// Speed of the orientation predicates per call: naive double, adaptive (expansions),
+// interval filter, and the GMP evaluations, on random and on exactly degenerate input.
+// [Sh97 §5] (timings of adaptive predicates) [MK89 §3.3]
+// Preconditions: a Release build. Each benchmark iteration is one predicate call, cycling
+// through 4096 precomputed inputs, so the Time column reads as ns per call. Built with
+// MK_COUNTERS=ON, the adaptive and interval rows also report the fraction of calls that
+// got past the first filter (timings then include the counting).
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "arithmetic/adaptive.hpp"
+#include "arithmetic/exact_reference.hpp"
+#include "arithmetic/interval_filter.hpp"
+#include "arithmetic/predicates_counters.hpp"
+#include "arithmetic/predicates_gmp.hpp"
+#include "arithmetic/predicates_naive.hpp"
+
+namespace {
+
+// ---- The kinds, one per back end ----------------------------------------------------
+struct Double {
+  static constexpr const char* name = "Double";
+  static int orient2d(const double* v) { return mk::naive::orient2d(v[0], v[1], v[2], v[3], v[4], v[5]); }
+  static int orient_vectors(const double* v) {
+    return mk::naive::orient_vectors(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+  }
+};
+struct Adaptive {
+  static constexpr const char* name = "Adaptive";
+  static constexpr auto method = mk::PredicateMethod::adaptive;
+  static int orient2d(const double* v) { return mk::adaptive::orient2d(v[0], v[1], v[2], v[3], v[4], v[5]); }
+  static int orient_vectors(const double* v) {
+    return mk::adaptive::orient_vectors(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+  }
+};
+struct Interval {
+  static constexpr const char* name = "Interval";
+  static constexpr auto method = mk::PredicateMethod::interval;
+  static int orient2d(const double* v) {
+    return mk::interval_filter::orient2d(v[0], v[1], v[2], v[3], v[4], v[5]);
+  }
+  static int orient_vectors(const double* v) {
+    return mk::interval_filter::orient_vectors(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+  }
+};
+// The ground truth of the tests: mpq rationals.
+struct Rational {
+  static constexpr const char* name = "Rational";
+  static int orient2d(const double* v) { return mk::reference::orient2d(v[0], v[1], v[2], v[3], v[4], v[5]); }
+  static int orient_vectors(const double* v) {
+    return mk::reference::orient_vectors(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+  }
+};
+// The last stage of adaptive and interval: integers after a common power-of-two scaling.
+struct GmpFallback {
+  static constexpr const char* name = "GmpFallback";
+  static int orient2d(const double* v) { return mk::gmp::orient2d(v[0], v[1], v[2], v[3], v[4], v[5]); }
+  static int orient_vectors(const double* v) {
+    return mk::gmp::orient_vectors(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+  }
+};
+
+// ---- Inputs: 4096 sets of 8 coordinates (orient2d reads the first 6) -------------------
+constexpr std::size_t input_count = 4096;
+using Inputs = std::vector<std::array<double, 8>>;
+
+// Uniform in [-1, 1]: the filter decides every call.
+Inputs random_inputs() {
+  std::mt19937_64 rng(5001);
+  std::uniform_real_distribution<double> d(-1.0, 1.0);
+  Inputs in(input_count);
+  for (auto& v : in)
+    for (double& x : v) x = d(rng);
+  return in;
+}
+
+// collinear_exact: points base + t (p, q) on integer lines, times 2^-10. Differences are
+// exact, so adaptive decides at stage B. orient_vectors gets two segments of the line.
+Inputs collinear_inputs() {
+  std::mt19937_64 rng(5002);
+  std::uniform_int_distribution<long> base(-(1L << 20), 1L << 20), dir(-1000, 1000), step(-1000, 1000);
+  Inputs in(input_count);
+  for (auto& v : in) {
+    const long x0 = base(rng), y0 = base(rng), p = dir(rng), q = dir(rng) | 1;
+    for (std::size_t i = 0; i < 8; i += 2) {
+      const long t = step(rng);
+      v[i] = std::ldexp(static_cast<double>(x0 + t * p), -10);
+      v[i + 1] = std::ldexp(static_cast<double>(y0 + t * q), -10);
+    }
+  }
+  return in;
+}
+
+// collinear_exact with rounded differences: (3x, kx) on y = (k/3) x, x with 45 significant
+// bits spread over 2^-20..2^20, so adaptive needs stages C and exact.
+Inputs collinear_inexact_inputs() {
+  std::mt19937_64 rng(5003);
+  std::uniform_int_distribution<int> exponent(-20, 20), slope(1, 60);
+  Inputs in(input_count);
+  for (auto& v : in) {
+    const double k = 2 * slope(rng) - 1;
+    for (std::size_t i = 0; i < 8; i += 2) {
+      const double x = std::ldexp(static_cast<double>((rng() >> 19) | (std::uint64_t{1} << 44)), exponent(rng) - 44);
+      v[i] = 3 * x;
+      v[i + 1] = k * x;
+    }
+  }
+  return in;
+}
+
+const Inputs& inputs(int which) {
+  static const std::array<Inputs, 3> all{random_inputs(), collinear_inputs(), collinear_inexact_inputs()};
+  return all[static_cast<std::size_t>(which)];
+}
+constexpr std::array<const char*, 3> input_names{"random", "collinear", "collinear_inexact"};
+
+template <class Kind>
+void report_filter_failures([[maybe_unused]] benchmark::State& state, [[maybe_unused]] mk::PredicateKind k) {
+  if constexpr (mk::PredicateCounters::enabled && requires { Kind::method; }) {
+    const auto c = mk::PredicateCounters::read();
+    const auto calls = static_cast<double>(c.calls(Kind::method, k));
+    const auto second = Kind::method == mk::PredicateMethod::adaptive ? mk::PredicateStage::expansion_b
+                                                                     : mk::PredicateStage::interval;
+    if (calls > 0) {
+      state.counters["past_filter"] = static_cast<double>(c.reached_stage(Kind::method, k, second)) / calls;
+      state.counters["gmp"] = static_cast<double>(c.reached_stage(Kind::method, k, mk::PredicateStage::gmp)) / calls;
+    }
+  }
+}
+
+template <class Kind>
+void BM_Orient2d(benchmark::State& state, int which) {
+  const Inputs& in = inputs(which);
+  mk::PredicateCounters::reset();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(Kind::orient2d(in[i].data()));
+    i = (i + 1) % input_count;
+  }
+  report_filter_failures<Kind>(state, mk::PredicateKind::orient2d);
+}
+
+template <class Kind>
+void BM_OrientVectors(benchmark::State& state, int which) {
+  const Inputs& in = inputs(which);
+  mk::PredicateCounters::reset();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(Kind::orient_vectors(in[i].data()));
+    i = (i + 1) % input_count;
+  }
+  report_filter_failures<Kind>(state, mk::PredicateKind::orient_vectors);
+}
+
+template <class Kind>
+void register_kind() {
+  for (int which = 0; which < static_cast<int>(input_names.size()); ++which) {
+    const std::string suffix = std::string("<") + Kind::name + ">/" + input_names[static_cast<std::size_t>(which)];
+    benchmark::RegisterBenchmark(("BM_Orient2d" + suffix).c_str(), BM_Orient2d<Kind>, which);
+    benchmark::RegisterBenchmark(("BM_OrientVectors" + suffix).c_str(), BM_OrientVectors<Kind>, which);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_kind<Double>();
+  register_kind<Adaptive>();
+  register_kind<Interval>();
+  register_kind<GmpFallback>();
+  register_kind<Rational>();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,290 @@
+#!/usr/bin/python3
+# Report of the overlay benchmark against peers: Markdown tables of median times and ratios,
+# and a log-log plot of time against n on blob, from Google Benchmark's JSON output.
+# [BRIEF §6] (the anchors and the bar)
+# Preconditions: JSON written by bin/bench_overlay --benchmark_out=FILE
+# --benchmark_out_format=json (any --benchmark_repetitions); run with /usr/bin/python3
+# (matplotlib from python3-matplotlib).
+"""Usage: plot_overlay.py overlay.json --markdown overlay.md --plot overlay_blob.png"""
+
+import argparse
+import json
+import math
+import re
+import statistics
+import sys
+from collections import defaultdict
+
+PEERS = [("GEOS", "GEOS"), ("BoostGeometry", "Boost.Geometry"), ("Clipper", "Clipper"),
+         ("CgalEpeck", "CGAL Epeck")]
+INEXACT_FAST_PEERS = ["GEOS", "BoostGeometry"]  # the bar's "fastest inexact peer"
+TABLE_ROWS = [("blob", 100_000), ("blob", 1_000_000), ("star", 10_000)]
+TABLE_OP = "intersection"
+NAME = re.compile(r"^BM_Overlay<(?P<runner>[^>]+)>/(?P<workload>\w+)/(?P<op>\w+)/(?P<n>\d+)")
+SUMMARY_END = "<!-- end of the summary: the README copies the text above -->"
+README_BEGIN = "<!-- overlay results: written by bench/plot_overlay.py --readme -->"
+README_END = "<!-- end of overlay results -->"
+TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
+
+
+def load(path):
+    """Per (runner, workload, op, n): median time in ms over repetitions, counters, error."""
+    with open(path) as f:
+        doc = json.load(f)
+    times = defaultdict(list)
+    counters = {}
+    errors = {}
+    for b in doc["benchmarks"]:
+        if b.get("run_type") == "aggregate":
+            continue  # medians are taken here from the repetitions themselves
+        m = NAME.match(b.get("run_name", b["name"]))
+        if not m:
+            continue
+        key = (m["runner"], m["workload"], m["op"], int(m["n"]))
+        if b.get("error_occurred"):
+            errors[key] = b.get("error_message", "error")
+            continue
+        times[key].append(b["real_time"] * TO_MS[b.get("time_unit", "ns")])
+        counters.setdefault(key, []).append(b)
+    medians = {k: statistics.median(v) for k, v in times.items()}
+    runs = {k: len(v) for k, v in times.items()}
+    last = {k: v[-1] for k, v in counters.items()}
+    return doc.get("context", {}), medians, runs, last, errors
+
+
+def fmt_n(n):
+    """1e5 rather than 100000 for powers of ten."""
+    e = round(math.log10(n)) if n > 0 else 0
+    return f"1e{e}" if n == 10 ** e else str(n)
+
+
+def fmt_ms(ms):
+    if ms is None:
+        return "-"
+    if ms >= 1000:
+        return f"{ms / 1000:.2f} s"
+    if ms >= 10:
+        return f"{ms:.0f} ms"
+    return f"{ms:.2g} ms"
+
+
+def fmt_ratio(r):
+    if r is None:
+        return "-"
+    return f"{r:.2g}x" if r < 10 else f"{r:.0f}x"
+
+
+def kernels_of(medians, errors):
+    names = {k[0] for k in list(medians) + list(errors) if k[0].startswith("mkbool:")}
+    order = ["exact", "rational", "adaptive", "interval", "cgal", "double"]
+    return sorted(names, key=lambda n: (order.index(n[7:]) if n[7:] in order else len(order), n))
+
+
+def cell(medians, errors, key):
+    if key in medians:
+        return fmt_ms(medians[key])
+    if key in errors:
+        return "error"
+    return "not run"
+
+
+NOT_RUN = ("*not run*: left out of the default run (bench/README.md, \"Limits of the default run\"); "
+           "*error*: the runner reported an error (listed at the end of overlay.md).\n")
+
+
+def markdown(context, medians, runs, counters, errors):
+    kernels = kernels_of(medians, errors)
+    out = []
+    label = lambda r: r.replace("mkbool:", "mkbool `") + "`" if r.startswith("mkbool:") else dict(PEERS).get(r, r)
+    reps = sorted(set(runs.values()))
+    out.append(f"Operation: {TABLE_OP}. Median wall time over {'/'.join(map(str, reps))} runs "
+               "(see bench/README.md for which cases run once); n = vertices per polygon.\n")
+    header = ["workload"] + [p[1] for p in PEERS] + [label(k) for k in kernels]
+    out.append("| " + " | ".join(header) + " |")
+    out.append("|" + "---|" * len(header))
+    for w, n in TABLE_ROWS:
+        row = [f"{w}, n = {fmt_n(n)}"]
+        row += [cell(medians, errors, (p, w, TABLE_OP, n)) for p, _ in PEERS]
+        row += [cell(medians, errors, (k, w, TABLE_OP, n)) for k in kernels]
+        out.append("| " + " | ".join(row) + " |")
+    out.append("")
+    out.append(NOT_RUN)
+
+    out.append("Ratio: mkbool kernel's time / peer's time (below 1: mkbool is faster).\n")
+    header = ["workload", "kernel"] + [p[1] for p in PEERS]
+    out.append("| " + " | ".join(header) + " |")
+    out.append("|" + "---|" * len(header))
+    for w, n in TABLE_ROWS:
+        for k in kernels:
+            t = medians.get((k, w, TABLE_OP, n))
+            if t is None:
+                continue
+            row = [f"{w}, n = {fmt_n(n)}", label(k)]
+            for p, _ in PEERS:
+                tp = medians.get((p, w, TABLE_OP, n))
+                row.append(fmt_ratio(t / tp) if tp else "-")
+            out.append("| " + " | ".join(row) + " |")
+    out.append("")
+
+    out.append(bar(medians))
+
+    out.append("Relative area difference against mkbool's exact area "
+               f"(reference kernel `{context.get('mkbool_reference_kernel', '?')}`), "
+               f"{TABLE_OP}:\n")
+    runners = [p for p, _ in PEERS] + kernels
+    header = ["workload"] + [label(r) for r in runners]
+    out.append("| " + " | ".join(header) + " |")
+    out.append("|" + "---|" * len(header))
+    for w, n in TABLE_ROWS:
+        row = [f"{w}, n = {fmt_n(n)}"]
+        for r in runners:
+            c = counters.get((r, w, TABLE_OP, n), {})
+            d = c.get("area_rel_diff")
+            row.append("-" if d is None else ("0" if d == 0 else f"{d:.1e}"))
+        out.append("| " + " | ".join(row) + " |")
+    out.append("")
+
+    out.append("Largest relative area difference against the exact area over all cases of the run "
+               "(every workload, operation and size with an exact reference):\n")
+    out.append("| runner | max abs(area_rel_diff) | case |")
+    out.append("|---|---|---|")
+    for r in runners:
+        worst = None
+        for (rr, w, op, n), c in counters.items():
+            d = c.get("area_rel_diff")
+            if rr == r and d is not None and (worst is None or abs(d) > abs(worst[0])):
+                worst = (d, f"{w}/{op}/{n}")
+        if worst:
+            out.append(f"| {label(r)} | {abs(worst[0]):.1e} | {worst[1] if worst[0] else '-'} |")
+    out.append("")
+
+    out.append(SUMMARY_END)
+    out.append("## All runs\n")
+    out.append("Median wall time; n is vertices per polygon (blob, star), squares per grid "
+               "(checkerboard) or rings per polygon (nested_squares).\n")
+    all_runners = [p for p, _ in PEERS] + kernels
+    header = ["workload", "op", "n"] + [label(r) for r in all_runners]
+    out.append("| " + " | ".join(header) + " |")
+    out.append("|" + "---|" * len(header))
+    cases = sorted({k[1:] for k in list(medians) + list(errors)},
+                   key=lambda c: (["blob", "star", "checkerboard", "nested_squares"].index(c[0])
+                                  if c[0] in ["blob", "star", "checkerboard", "nested_squares"] else 9,
+                                  c[2], ["intersection", "union", "difference", "xor"].index(c[1])
+                                  if c[1] in ["intersection", "union", "difference", "xor"] else 9))
+    for w, op, n in cases:
+        row = [w, op, str(n)] + [cell(medians, errors, (r, w, op, n)) for r in all_runners]
+        out.append("| " + " | ".join(row) + " |")
+    out.append("")
+    if errors:
+        out.append("Errors reported by the runners:\n")
+        for (r, w, op, n), msg in sorted(errors.items()):
+            out.append(f"- `{r}` {w}/{op}/{n}: {msg}")
+        out.append("")
+
+    keys = ["date", "mkbool_commit", "host_name", "num_cpus", "mhz_per_cpu", "load_avg",
+            "GEOS_version", "BoostGeometry_version", "Clipper_version", "CgalEpeck_version",
+            "mkbool_kernels", "mkbool_reference_kernel", "overlay_full"]
+    out.append("Context: " + "; ".join(f"{k} = {context[k]}" for k in keys if k in context) + "\n")
+    return "\n".join(out)
+
+
+def bar(medians):
+    """The bar of BRIEF §6 / issue 5 for the exact kernel, met or not, from this run."""
+    k = "mkbool:exact"
+    get = lambda r, w, n: medians.get((r, w, TABLE_OP, n))
+    lines = ["The bar for `exact` (BRIEF §6), from this run:\n", "| criterion | measured | met |",
+             "|---|---|---|"]
+
+    def row(text, value, ok):
+        lines.append(f"| {text} | {value} | {'-' if ok is None else ('yes' if ok else 'no')} |")
+
+    te = get(k, "blob", 100_000)
+    fast = [t for t in (get(p, "blob", 100_000) for p in INEXACT_FAST_PEERS) if t]
+    if te and fast:
+        r = te / min(fast)
+        row("blob 1e5: within 1.5x of the fastest of GEOS and Boost.Geometry", f"{r:.2f}x", r <= 1.5)
+    tc = get("CgalEpeck", "blob", 100_000)
+    if te and tc:
+        row("blob 1e5: at least 50x faster than CGAL Epeck", f"{tc / te:.1f}x faster", tc / te >= 50)
+    ts = get(k, "star", 10_000)
+    tcl = get("Clipper", "star", 10_000)
+    if ts and tcl:
+        row("star 1e4: faster than Clipper", f"{tcl / ts:.2f}x faster", ts < tcl)
+    tcg = get("CgalEpeck", "star", 10_000)
+    if ts and tcg:
+        row("star 1e4: at least 2x faster than CGAL Epeck", f"{tcg / ts:.2f}x faster", tcg / ts >= 2)
+    pts = sorted((n, t) for (r, w, op, n), t in medians.items() if r == k and w == "blob" and op == TABLE_OP)
+    if len(pts) >= 2:
+        (n0, t0), (n1, t1) = pts[0], pts[-1]
+        slope = math.log(t1 / t0) / math.log(n1 / n0)
+        guide = math.log((n1 * math.log(n1)) / (n0 * math.log(n0))) / math.log(n1 / n0)
+        row(f"blob {fmt_n(n0)}..{fmt_n(n1)}: time grows near n log n (log-log slope at most 1.25; "
+            f"n log n gives {guide:.2f})", f"slope {slope:.2f}", slope <= 1.25)
+    return "\n".join(lines) + "\n"
+
+
+def plot(medians, errors, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    runners = [p for p, _ in PEERS] + kernels_of(medians, errors)
+    styles = {"GEOS": "s-", "BoostGeometry": "D-", "Clipper": "^-", "CgalEpeck": "v-"}
+    for r in runners:
+        pts = sorted((n, t) for (rr, w, op, n), t in medians.items() if rr == r and w == "blob" and op == TABLE_OP)
+        if not pts:
+            continue
+        label = dict(PEERS).get(r, r)
+        style = styles.get(r, "o--" if r != "mkbool:exact" else "o-")
+        width = 2.5 if r == "mkbool:exact" else 1.2
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, label=label, linewidth=width, markersize=4)
+    # An n log n guide through the fastest time at the smallest n.
+    ns = sorted({n for (r, w, op, n) in medians if w == "blob" and op == TABLE_OP})
+    if ns:
+        t0 = min(t for (r, w, op, n), t in medians.items() if w == "blob" and op == TABLE_OP and n == ns[0])
+        guide = [t0 * (n * math.log(n)) / (ns[0] * math.log(ns[0])) for n in ns]
+        ax.loglog(ns, guide, ":", color="gray", label="n log n")
+    ax.set_xlabel("n (vertices per polygon)")
+    ax.set_ylabel("median wall time (ms)")
+    ax.set_title(f"blob, {TABLE_OP}: time against n")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("json")
+    ap.add_argument("--markdown", help="write the tables here (default: stdout)")
+    ap.add_argument("--plot", help="write the blob plot (PNG) here")
+    ap.add_argument("--readme", help="replace the results between the markers of this README")
+    a = ap.parse_args()
+    context, medians, runs, counters, errors = load(a.json)
+    text = markdown(context, medians, runs, counters, errors)
+    if a.markdown:
+        with open(a.markdown, "w") as f:
+            f.write(text)
+    else:
+        sys.stdout.write(text)
+    if a.plot:
+        plot(medians, errors, a.plot)
+    if a.readme:
+        update_readme(a.readme, text.split(SUMMARY_END)[0], context)
+
+
+def update_readme(path, summary, context):
+    with open(path) as f:
+        doc = f.read()
+    begin, end = doc.index(README_BEGIN) + len(README_BEGIN), doc.index(README_END)
+    run = f"Run of {context.get('date', '?')[:16].replace('T', ' ')} UTC (mkbool " \
+          f"{context.get('mkbool_commit', '?')}), load average " \
+          f"{', '.join(f'{x:.1f}' for x in context.get('load_avg', []))} on {context.get('num_cpus', '?')} CPUs. " \
+          "Every case: bench/results/overlay.md.\n\n![blob: time against n](results/overlay_blob.png)\n\n"
+    with open(path, "w") as f:
+        f.write(doc[:begin] + "\n" + run + summary.rstrip() + "\n" + doc[end:])
+
+
+if __name__ == "__main__":
+    main()

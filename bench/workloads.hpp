@@ -1,0 +1,62 @@
+// Benchmark workloads: pairs of input polygons generated from a fixed seed (blob, star,
+// checkerboard, nested squares), for the benchmark against peers.
+// [MK89 §4.3] (cost of the intersection step as n and k grow) [BRIEF §6] (blob, star)
+// Preconditions: n >= 3 for blob and star, n >= 1 for checkerboard and nested squares.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/polygon.hpp"
+
+namespace mk::bench {
+
+enum class WorkloadKind : std::uint8_t { blob, star, checkerboard, nested_squares };
+
+constexpr std::string_view workload_name(WorkloadKind w) {
+  switch (w) {
+    case WorkloadKind::blob: return "blob";
+    case WorkloadKind::star: return "star";
+    case WorkloadKind::checkerboard: return "checkerboard";
+    case WorkloadKind::nested_squares: return "nested_squares";
+  }
+  return "?";
+}
+
+// Two inputs in both forms the benchmark needs: OGC polygons-with-holes (shells counter-
+// clockwise, holes clockwise, rings not closed) for the peers, and the paper's model (one
+// island-type polygon holding every ring) for mkbool.
+struct Workload {
+  WorkloadKind kind = WorkloadKind::blob;
+  std::size_t n = 0;  // the size argument: see each generator
+  std::uint64_t seed = 0;
+  MultiPolygon a_ogc, b_ogc;
+  Polygon a, b;
+  std::size_t vertices() const;  // vertices of A plus vertices of B
+};
+
+// Two smooth closed curves r(t) = 100 (1 + 0.1 sin(5t + seed)) of n vertices each, the same
+// shape around centres (0, 0) and (30, 10). With seed 0 they cross twice (some other seeds
+// cross four times: the curve is not convex).
+Workload blob(std::size_t n, std::uint64_t seed = 0);
+
+// Two star-shaped polygons of n vertices each around the same centres as blob: sorted
+// random angles, radii uniform in [50, 100]; about n^2 / 400 crossings.
+Workload star(std::size_t n, std::uint64_t seed = 1);
+
+// Two checkerboards of n unit squares each (the dark cells of a square grid, touching their
+// diagonal neighbours at corners), B shifted by half a cell along x: collinear overlapping
+// edges of both directions and vertex_on_edge everywhere, no proper crossing.
+Workload checkerboard(std::size_t n);
+
+// n concentric square annuli per polygon: A between half-sizes 4k+1 and 4k+3, B between 4k+2
+// and 4k+5 (k = 0..n-1). Each annulus of B overlaps one of A and touches the next one along
+// the whole of its outer square (collinear edges of opposite direction, shared corners).
+Workload nested_squares(std::size_t n);
+
+Workload make_workload(WorkloadKind kind, std::size_t n);
+
+}  // namespace mk::bench

@@ -1,0 +1,162 @@
+// Batch mode over JSON Lines. [MK89 §3.2] [MK89 §2.3]
+// Preconditions: see batch.hpp.
+#include "cli/batch.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <new>
+#include <optional>
+#include <string_view>
+
+#include "api/mkbool.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/inputs.hpp"
+#include "cli/output_file.hpp"
+#include "cli/stats.hpp"
+#include "io/file.hpp"
+#include "io/wkt.hpp"
+
+namespace mk::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// A case that cannot be run; its message goes into the output line's "error".
+struct CaseError {
+  std::string message;
+};
+
+std::optional<Operation> parse_operation(std::string_view name) {
+  if (name == "intersection") return Operation::intersection;
+  if (name == "union") return Operation::union_;
+  if (name == "difference") return Operation::difference;
+  if (name == "symdifference" || name == "xor") return Operation::symmetric_difference;
+  return std::nullopt;
+}
+
+std::string member_string(const Json& line, const char* key) {
+  const auto it = line.find(key);
+  if (it == line.end()) throw CaseError{std::string("missing \"") + key + "\""};
+  if (!it->is_string()) throw CaseError{std::string("\"") + key + "\" is not a string"};
+  return it->get<std::string>();
+}
+
+Polygon read_case_polygon(const std::string& wkt, const char* key) {
+  try {
+    return to_polygon(read_wkt(wkt));
+  } catch (const InvalidInput& e) {
+    throw CaseError{std::string(key) + ": " + e.what()};
+  }
+}
+
+// nlohmann's messages start with "[json.exception.parse_error.101] ", which helps nobody,
+// and count lines within the one JSON line, which the output's "line" already gives.
+std::string without_exception_id(const char* what) {
+  std::string_view s(what);
+  if (!s.empty() && s.front() == '[') {
+    if (const auto end = s.find("] "); end != std::string_view::npos) s.remove_prefix(end + 2);
+  }
+  std::string message(s);
+  constexpr std::string_view line_one = "at line 1, column ";
+  if (const auto at = message.find(line_one); at != std::string::npos) message.replace(at, line_one.size(), "at column ");
+  return message;
+}
+
+// Fills `out` for one case; throws CaseError when the case fails.
+void run_case(std::string_view text, const BatchOptions& options, Json& out) {
+  Json line;
+  try {
+    line = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    throw CaseError{"malformed JSON: " + without_exception_id(e.what())};
+  }
+  if (!line.is_object()) throw CaseError{"a line must be a JSON object"};
+  if (const auto id = line.find("id"); id != line.end()) out["id"] = *id;
+  const std::string op_name = member_string(line, "op");
+  out["op"] = op_name;
+  const auto op = parse_operation(op_name);
+  if (!op) {
+    throw CaseError{"unknown op '" + op_name + "' (expected intersection, union, difference, symdifference or xor)"};
+  }
+  const Polygon a = read_case_polygon(member_string(line, "a_wkt"), "a_wkt");
+  const Polygon b = read_case_polygon(member_string(line, "b_wkt"), "b_wkt");
+
+  BooleanOptions o;
+  o.op = *op;
+  o.regular = options.regular;
+  o.kernel = options.kernel;
+  BooleanOutput r;
+  try {
+    r = compute(a, b, o);
+  } catch (const InvalidInput& e) {
+    throw CaseError{e.what()};
+  } catch (const KernelFailure& e) {
+    throw CaseError{"kernel " + out["kernel"].get<std::string>() + " failed: " + e.what()};
+  }
+  out["kernel"] = r.stats.kernel;
+  out["valid"] = is_output_valid(r.output);
+  out["op_ns"] = r.stats.op_ns;
+  out["area"] = r.stats.area ? Json(*r.stats.area) : Json(nullptr);
+  out["area_exact"] = r.stats.area_exact ? Json(*r.stats.area_exact) : Json(nullptr);
+  // Inputs of WKT are islands, so the result is bounded; the check keeps that an invariant.
+  if (r.output.unbounded) throw CaseError{"the result is unbounded and has no WKT form"};
+  out["result_wkt"] = write_wkt(r.output);
+}
+
+std::string_view strip_line_end(std::string_view s) {
+  if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
+  return s;
+}
+
+bool is_blank(std::string_view s) { return s.find_first_not_of(" \t\r\f\v") == std::string_view::npos; }
+
+}  // namespace
+
+std::size_t run_batch(const BatchOptions& options) {
+  std::string text;
+  if (options.input == "-") {
+    text = read_standard_input();
+  } else {
+    text = read_file(options.input);
+  }
+  const std::string kernel(options.kernel.empty() ? default_kernel() : std::string_view(options.kernel));
+
+  OutputFile out(options.output);
+  std::size_t failed = 0;
+  std::size_t line_number = 0;
+  std::string_view rest(text);
+  while (!rest.empty()) {
+    const std::size_t end = rest.find('\n');
+    const std::string_view raw = strip_line_end(rest.substr(0, end));
+    rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
+    ++line_number;
+    if (is_blank(raw)) continue;
+
+    // Every key in its place from the start, so that the lines have one shape.
+    Json result = {{"id", nullptr},     {"op", nullptr},         {"kernel", kernel}, {"result_wkt", nullptr},
+                   {"area", nullptr},   {"area_exact", nullptr}, {"valid", nullptr}, {"op_ns", nullptr},
+                   {"line", line_number}};
+    try {
+      run_case(raw, options, result);
+    } catch (const CaseError& e) {
+      result["error"] = e.message;
+      ++failed;
+    } catch (const std::bad_alloc&) {
+      result["error"] = "out of memory";
+      ++failed;
+    } catch (const std::exception& e) {
+      result["error"] = e.what();
+      ++failed;
+    }
+    if (result.contains("error")) {
+      // A failed case reports no partial result.
+      for (const char* key : {"result_wkt", "area", "area_exact", "valid", "op_ns"}) result[key] = nullptr;
+    }
+    out.write(result.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n");
+  }
+  out.commit();
+  return failed;
+}
+
+}  // namespace mk::cli

@@ -1,0 +1,26 @@
+// The command's batch form: JSON Lines in, one result line per case out, for experiments
+// and conformance runs. [MK89 §3.2] [MK89 §2.3] (operations; symmetric difference added)
+// Preconditions: the kernel name is one of mk::kernel_names() (checked while parsing).
+#pragma once
+
+#include <string>
+
+namespace mk::cli {
+
+struct BatchOptions {
+  std::string input;   // a JSON Lines file, or `-` for standard input
+  std::string kernel;  // empty: mk::default_kernel()
+  bool regular = true;
+  std::string output;  // empty: standard output
+};
+
+// Each non-blank input line is an object with "id" (any JSON value, echoed), "op"
+// (intersection, union, difference, symdifference or xor), "a_wkt" and "b_wkt"; other
+// members are ignored. Each gives one output line, in input order: id, op, kernel,
+// result_wkt, area, area_exact, valid, op_ns, line (1-based input line), and error when the
+// case failed; a failed case never stops the batch. Returns the number of failed cases.
+// Throws mk::InvalidInput when the batch file cannot be read, mk::cli::OutputError when the
+// output cannot be written (the output file is then left untouched).
+std::size_t run_batch(const BatchOptions& options);
+
+}  // namespace mk::cli

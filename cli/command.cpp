@@ -1,0 +1,83 @@
+// One Boolean operation from the shell. [MK89 §3.2] [MK89 §2.3]
+// Preconditions: see command.hpp.
+#include "cli/command.hpp"
+
+#include <cstdio>
+
+#include "api/mkbool.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/inputs.hpp"
+#include "cli/output_file.hpp"
+#include "cli/stats.hpp"
+#include "io/geojson.hpp"
+#include "io/native_json.hpp"
+#include "io/svg.hpp"
+#include "io/wkt.hpp"
+
+namespace mk::cli {
+
+namespace {
+
+std::string type_name(PolygonType t) { return t == PolygonType::island ? "island" : "hole"; }
+
+// Text files end in a newline, so that shells and `cat` show the output cleanly.
+std::string with_final_newline(std::string text) {
+  if (text.empty() || text.back() != '\n') text += '\n';
+  return text;
+}
+
+// The result's text in the requested format. An unbounded result has no WKT or GeoJSON
+// form (both describe finite areas), so it is refused with the way out rather than cut down
+// to its bounded part.
+std::string format_output(const CommandOptions& o, const Polygon& a, const Polygon& b, const BooleanOutput& r) {
+  switch (o.format) {
+    case OutputFormat::wkt:
+    case OutputFormat::geojson:
+      if (r.output.unbounded) {
+        throw OutputError(std::string("the result of ") + std::string(operation_name(o.op)) + " of A (" +
+                          type_name(a.type) + ") and B (" + type_name(b.type) +
+                          ") is unbounded (hole type), which " +
+                          (o.format == OutputFormat::wkt ? "WKT" : "GeoJSON") +
+                          " cannot express; use --format json (or svg)");
+      }
+      return with_final_newline(o.format == OutputFormat::wkt ? write_wkt(r.output) : write_geojson(r.output));
+    case OutputFormat::native_json:
+      return with_final_newline(write_native_json(r.output, r.stats.kernel));
+    case OutputFormat::svg:
+      return with_final_newline(write_svg(a, b, r.output));
+  }
+  return {};
+}
+
+}  // namespace
+
+void run_command(const CommandOptions& o) {
+  if (o.a == "-" && o.b == "-") throw UsageError("A and B cannot both be standard input ('-')");
+  Polygon a = read_input(o.a, "A");
+  Polygon b = read_input(o.b, "B");
+  if (o.a_type) a.type = *o.a_type;
+  if (o.b_type) b.type = *o.b_type;
+
+  BooleanOptions options;
+  options.op = o.op;
+  options.regular = o.regular;
+  options.kernel = o.kernel;
+  options.area = o.stats;  // the area is only reported in --stats
+  PredicateCounters::reset();
+  const BooleanOutput result = compute(a, b, options);
+  const PredicateCounters counters = PredicateCounters::read();
+
+  // Statistics first: they describe the operation, which succeeded even when its result
+  // cannot be written in the requested format.
+  if (o.stats) {
+    const std::string line = stats_json(result, counters) + "\n";
+    std::fputs(line.c_str(), stderr);
+    std::fflush(stderr);
+  }
+  const std::string text = format_output(o, a, b, result);
+  OutputFile out(o.output);
+  out.write(text);
+  out.commit();
+}
+
+}  // namespace mk::cli

@@ -1,0 +1,124 @@
+// Resolving the command's polygon arguments into polygons. [MK89 §2.2] [OGC06-103 §7]
+// Preconditions: none; every failure is an mk::InvalidInput naming the argument.
+#include "cli/inputs.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+
+#include "core/error.hpp"
+#include "io/file.hpp"
+#include "io/format.hpp"
+
+namespace mk::cli {
+
+namespace {
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
+bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+
+bool starts_with_word(std::string_view s, std::string_view upper_word) {
+  if (s.size() < upper_word.size()) return false;
+  for (std::size_t i = 0; i < upper_word.size(); ++i) {
+    const char c = s[i];
+    const char u = (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+    if (u != upper_word[i]) return false;
+  }
+  return s.size() == upper_word.size() || !is_letter(s[upper_word.size()]);
+}
+
+std::string_view skip_space(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  return s;
+}
+
+// A keyword of letters, then `(`, EMPTY or a dimension tag: what every WKT geometry starts
+// with, and what no ordinary file name looks like. Unknown keywords (LINESTRING) still
+// count, so that the reader reports the geometry type instead of a missing file.
+bool looks_like_wkt(std::string_view s) {
+  s = skip_space(s);
+  std::size_t n = 0;
+  while (n < s.size() && is_letter(s[n])) ++n;
+  if (n == 0) return false;
+  s = skip_space(s.substr(n));
+  return (!s.empty() && s.front() == '(') || starts_with_word(s, "EMPTY") || starts_with_word(s, "Z") ||
+         starts_with_word(s, "M") || starts_with_word(s, "ZM");
+}
+
+bool looks_like_json(std::string_view s) {
+  s = skip_space(s);
+  return !s.empty() && s.front() == '{';
+}
+
+bool is_blank(std::string_view s) { return skip_space(s).empty(); }
+
+}  // namespace
+
+InputSource classify_input(const std::string& argument) {
+  if (argument == "-") return InputSource::standard_input;
+  std::error_code ec;
+  if (std::filesystem::exists(argument, ec)) return InputSource::file;
+  if (looks_like_wkt(argument) || looks_like_json(argument)) return InputSource::inline_text;
+  return InputSource::file;
+}
+
+std::string read_standard_input() {
+  std::string text;
+  char buffer[1 << 16];
+  for (;;) {
+    const std::size_t got = std::fread(buffer, 1, sizeof buffer, stdin);
+    text.append(buffer, got);
+    if (got < sizeof buffer) {
+      if (std::ferror(stdin)) {
+        throw InvalidInput(std::string("cannot read standard input: ") + std::strerror(errno));
+      }
+      break;
+    }
+  }
+  return text;
+}
+
+Polygon read_input(const std::string& argument, std::string_view role) {
+  const std::string who(role);
+  std::string text;
+  std::string where;      // the source, as messages name it
+  std::string hint;       // file name for the format choice; empty means sniff the content
+  switch (classify_input(argument)) {
+    case InputSource::standard_input:
+      try {
+        text = read_standard_input();
+      } catch (const InvalidInput& e) {
+        throw InvalidInput(who + ": " + e.what());
+      }
+      where = "standard input";
+      break;
+    case InputSource::file:
+      try {
+        text = read_file(argument);
+      } catch (const InvalidInput& e) {
+        throw InvalidInput(who + ": " + e.what());  // the message already names the path
+      }
+      where = "file '" + argument + "'";
+      hint = argument;
+      break;
+    case InputSource::inline_text:
+      text = argument;
+      where = looks_like_json(argument) ? "inline JSON" : "inline WKT";
+      break;
+  }
+  if (is_blank(text)) {
+    // empty_input_message quotes a path; standard input has none.
+    const std::string message = empty_input_message(argument);
+    throw InvalidInput(who + ": " + (argument == "-" ? "standard input" + message.substr(message.find(" is empty"))
+                                                       : message));
+  }
+  try {
+    return read_polygon(text, hint);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(who + " (" + where + "): " + e.what());
+  }
+}
+
+}  // namespace mk::cli

@@ -1,0 +1,29 @@
+// Resolving the command's polygon arguments: a file, `-` for standard input, or inline
+// WKT (or JSON) text, read into the paper's polygon model. [MK89 §2.2] [OGC06-103 §7]
+// Preconditions: at most one argument of a command is `-` (checked by the caller).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "core/polygon.hpp"
+
+namespace mk::cli {
+
+enum class InputSource { standard_input, file, inline_text };
+
+// `-` is standard input; an existing path is a file; otherwise text that looks like WKT
+// (a geometry keyword followed by `(`, EMPTY or a Z/M tag) or JSON (starts with `{`) is
+// inline text; anything else is taken as a file name so that the error names it.
+InputSource classify_input(const std::string& argument);
+
+// Reads and parses one argument; `role` ("A" or "B") starts every error message, which
+// then names the source ("file 'x.wkt'", "standard input", "inline WKT") and the reader's
+// own position (line, column, polygon, ring, vertex). An empty input is an error (an empty
+// polygon is written POLYGON EMPTY). Throws mk::InvalidInput.
+Polygon read_input(const std::string& argument, std::string_view role);
+
+// The whole of standard input, in binary.
+std::string read_standard_input();
+
+}  // namespace mk::cli

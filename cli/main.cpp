@@ -1,0 +1,167 @@
+// The mkbool command: argument parsing, dispatch to the single-operation and batch forms,
+// and the mapping from errors to exit codes and `mkbool: error: ...` messages (issue 3).
+// [MK89 §3.2] (procedure polygonoperation: inputs, types, operation, regularity)
+// Preconditions: none.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <map>
+#include <new>
+#include <string>
+
+#include "api/mkbool.hpp"
+#include "cli/batch.hpp"
+#include "cli/command.hpp"
+#include "cli/exit_codes.hpp"
+
+namespace mk::cli {
+namespace {
+
+constexpr const char* usage_lines =
+    "usage: mkbool OP A B [--kernel K] [--non-regular] [--a-type island|hole] [--b-type island|hole]\n"
+    "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats]\n"
+    "       mkbool batch FILE.jsonl [--kernel K] [--non-regular] [-o FILE]\n"
+    "       mkbool --help | --version\n";
+
+constexpr const char* exit_code_help =
+    "A and B: a file (.wkt, .geojson, .json, else the content decides), '-' for standard\n"
+    "input (at most one), or inline WKT text.\n"
+    "batch: reads JSON Lines {\"id\", \"op\", \"a_wkt\", \"b_wkt\"} and writes one JSON line per\n"
+    "case (see 'mkbool batch --help').\n"
+    "Exit codes: 0 success; 1 other failure (unwritable output, an unbounded result as\n"
+    "WKT/GeoJSON, kernel failure); 2 usage error; 3 invalid input.\n";
+
+int fail(ExitCode code, const std::string& message) {
+  std::fprintf(stderr, "mkbool: error: %s\n", message.c_str());
+  return static_cast<int>(code);
+}
+
+// Every kernel built, checked while parsing so that a misspelt name is a usage error
+// before any input is read.
+CLI::Validator kernel_validator() {
+  return CLI::Validator(
+      [](std::string& name) -> std::string {
+        std::string known;
+        for (const auto k : kernel_names()) {
+          if (name == k) return {};
+          known += (known.empty() ? "" : ", ") + std::string(k);
+        }
+        return "unknown kernel '" + name + "' (built: " + known + ")";
+      },
+      "KERNEL", "kernel");
+}
+
+std::string kernel_help() {
+  std::string names;
+  for (const auto k : kernel_names()) names += (names.empty() ? "" : ", ") + std::string(k);
+  return "arithmetic kernel: " + names + " (default " + std::string(default_kernel()) + ")";
+}
+
+// CLI11 reports help and version as exceptions with exit code 0, and parse errors with
+// its own codes; the command's contract is 2 for every usage error.
+int parse_error(const CLI::App& app, const CLI::ParseError& e) {
+  if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+  std::fprintf(stderr, "mkbool: error: %s\nRun 'mkbool --help' for usage.\n", e.what());
+  return static_cast<int>(ExitCode::usage);
+}
+
+int run_batch_form(int argc, char** argv) {
+  CLI::App app("Runs one Boolean operation per JSON line. Each input line is an object with \"id\",\n"
+               "\"op\" (intersection, union, difference, symdifference or xor), \"a_wkt\" and \"b_wkt\";\n"
+               "each output line has id, op, kernel, result_wkt, area, area_exact, valid, op_ns,\n"
+               "line, and error when that case failed. A failed case never stops the batch.\n",
+               "mkbool batch");
+  BatchOptions o;
+  bool non_regular = false;
+  app.add_option("FILE", o.input, "JSON Lines file, or '-' for standard input")->required();
+  app.add_option("--kernel", o.kernel, kernel_help())->check(kernel_validator());
+  app.add_flag("--non-regular", non_regular, "closed-set operations (keep dangling edges and points)");
+  app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
+  try {
+    app.parse(argc - 1, argv + 1);  // argv[1] is "batch"
+  } catch (const CLI::ParseError& e) {
+    return parse_error(app, e);
+  }
+  o.regular = !non_regular;
+  run_batch(o);
+  return static_cast<int>(ExitCode::success);
+}
+
+int run_command_form(int argc, char** argv) {
+  CLI::App app(std::string("Exact Boolean operations on polygons (Margalit & Knott 1989).\n\n") + usage_lines,
+               "mkbool");
+  app.footer(exit_code_help);
+  app.set_version_flag("--version", std::string("mkbool ") + MK_VERSION);
+
+  CommandOptions o;
+  std::string op;
+  std::string a_type;
+  std::string b_type;
+  std::string format = "wkt";
+  bool non_regular = false;
+  const std::map<std::string, Operation> ops{{"intersection", Operation::intersection},
+                                             {"union", Operation::union_},
+                                             {"difference", Operation::difference},
+                                             {"xor", Operation::symmetric_difference}};
+  const std::map<std::string, OutputFormat> formats{{"wkt", OutputFormat::wkt},
+                                                    {"geojson", OutputFormat::geojson},
+                                                    {"json", OutputFormat::native_json},
+                                                    {"svg", OutputFormat::svg}};
+  const std::map<std::string, PolygonType> types{{"island", PolygonType::island}, {"hole", PolygonType::hole}};
+
+  app.add_option("OP", op, "intersection, union, difference (A minus B) or xor")
+      ->required()
+      ->check(CLI::IsMember(ops));
+  app.add_option("A", o.a, "first polygon: file, '-' or inline WKT")->required();
+  app.add_option("B", o.b, "second polygon: file, '-' or inline WKT")->required();
+  app.add_option("--kernel", o.kernel, kernel_help())->check(kernel_validator());
+  app.add_flag("--non-regular", non_regular, "closed-set operations (keep dangling edges and points)");
+  app.add_option("--a-type", a_type, "type of A: island or hole (default: from the input; island)")
+      ->check(CLI::IsMember(types));
+  app.add_option("--b-type", b_type, "type of B: island or hole (default: from the input; island)")
+      ->check(CLI::IsMember(types));
+  app.add_option("--format", format, "output format: wkt (default), geojson, json (native, exact) or svg")
+      ->check(CLI::IsMember(formats));
+  app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
+  app.add_flag("--stats", o.stats, "print one JSON line of statistics on standard error");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return parse_error(app, e);
+  }
+  o.op = ops.at(op);
+  o.regular = !non_regular;
+  if (!a_type.empty()) o.a_type = types.at(a_type);
+  if (!b_type.empty()) o.b_type = types.at(b_type);
+  o.format = formats.at(format);
+  run_command(o);
+  return static_cast<int>(ExitCode::success);
+}
+
+int run(int argc, char** argv) {
+  try {
+    if (argc > 1 && std::strcmp(argv[1], "batch") == 0) return run_batch_form(argc, argv);
+    return run_command_form(argc, argv);
+  } catch (const UsageError& e) {
+    return fail(ExitCode::usage, e.what());
+  } catch (const InvalidInput& e) {
+    return fail(ExitCode::invalid_input, e.what());
+  } catch (const KernelFailure& e) {
+    return fail(ExitCode::failure, std::string("the kernel failed (inexact arithmetic): ") + e.what() +
+                                       "; an exact kernel (--kernel " + std::string(default_kernel()) +
+                                       ") never does");
+  } catch (const OutputError& e) {
+    return fail(ExitCode::failure, e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(ExitCode::failure, "out of memory");
+  } catch (const std::exception& e) {
+    return fail(ExitCode::failure, e.what());
+  }
+}
+
+}  // namespace
+}  // namespace mk::cli
+
+int main(int argc, char** argv) { return mk::cli::run(argc, argv); }

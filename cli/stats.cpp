@@ -1,0 +1,65 @@
+// The --stats line and the exact validity check of rounded output. [MK89 §3.3] [Sh97 §4.2]
+// Preconditions: `result` comes from mk::compute.
+#include "cli/stats.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <vector>
+
+#include "arithmetic/kernels/exact_kernel.hpp"
+#include "core/boolean_op.hpp"  // before to_output.hpp: step6_construct.hpp needs EfEntry declared
+#include "core/to_output.hpp"
+
+namespace mk::cli {
+
+namespace {
+
+nlohmann::ordered_json counters_json(const PredicateCounters& c) {
+  constexpr std::pair<PredicateMethod, const char*> methods[] = {{PredicateMethod::adaptive, "adaptive"},
+                                                                {PredicateMethod::interval, "interval"}};
+  constexpr std::pair<PredicateKind, const char*> kinds[] = {{PredicateKind::orient2d, "orient2d"},
+                                                            {PredicateKind::orient_vectors, "orient_vectors"}};
+  constexpr std::pair<PredicateStage, const char*> stages[] = {
+      {PredicateStage::filter, "filter"},           {PredicateStage::interval, "interval"},
+      {PredicateStage::expansion_b, "expansion_b"}, {PredicateStage::expansion_c, "expansion_c"},
+      {PredicateStage::expansion_exact, "expansion_exact"}, {PredicateStage::gmp, "gmp"}};
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [m, m_name] : methods) {
+    for (const auto& [k, k_name] : kinds) {
+      if (c.calls(m, k) == 0) continue;
+      nlohmann::ordered_json per_stage = nlohmann::ordered_json::object();
+      for (const auto& [s, s_name] : stages) {
+        if (const auto n = c.reached_stage(m, k, s); n > 0) per_stage[s_name] = n;
+      }
+      out[m_name][k_name] = per_stage;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+bool is_output_valid(const Output& output) {
+  if (output.rounded_valid) return *output.rounded_valid;
+  std::vector<std::vector<Point>> rings;
+  rings.reserve(output.irreducible.size());
+  for (const auto& c : output.irreducible) rings.push_back(c.vertices);
+  return is_valid_rounded_output<ExactKernel>(rings);
+}
+
+std::string stats_json(const BooleanOutput& result, const PredicateCounters& counters) {
+  const BooleanStats& s = result.stats;
+  nlohmann::ordered_json j;
+  j["kernel"] = s.kernel;
+  j["op_ns"] = s.op_ns;
+  j["vertices_in"] = s.vertices_in;
+  j["crossings"] = s.crossings;
+  j["vertices_out"] = s.vertices_out;
+  j["rounded_valid"] = result.output.rounded_valid ? nlohmann::ordered_json(*result.output.rounded_valid) : nullptr;
+  j["area"] = s.area ? nlohmann::ordered_json(*s.area) : nullptr;
+  j["area_exact"] = s.area_exact ? nlohmann::ordered_json(*s.area_exact) : nullptr;
+  if constexpr (PredicateCounters::enabled) j["predicates"] = counters_json(counters);
+  return j.dump();
+}
+
+}  // namespace mk::cli

@@ -1,0 +1,87 @@
+// The data the six steps share: input points with identities, prepared polygons (cycles),
+// the vertex rings AV and BV as edges with inserted points, and their edge fragments.
+// [MK89 §3.3] (vertex rings AV, BV) [MK89 §2.2] (irreducible parts)
+// Preconditions: filled in order by prepare, normalize_orientations, insert_intersections,
+// classify_fragments.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "core/kernel.hpp"
+#include "core/polygon.hpp"
+
+namespace mk {
+
+// An original edge of a prepared polygon, src -> dst (point ids), with the vertices that
+// step 3 inserted strictly inside it, in order from src to dst.
+struct Edge {
+  int src = -1;
+  int dst = -1;
+  int cycle = -1;
+  std::vector<int> inserted;
+};
+
+// An edge fragment [MK89 §3.1 step 4]: the piece of `edge` between two consecutive vertices
+// of a vertex ring. far_left[i] / far_right[i] are the winding depths of polygon i (0 = A,
+// 1 = B) just left and right of it, counted with FAR(i) positive [MK89 §2.2].
+struct Fragment {
+  int from = -1;
+  int to = -1;
+  int edge = -1;
+  std::array<int, 2> far_left{};
+  std::array<int, 2> far_right{};
+};
+
+// Where a cycle came from in the user's input, for error messages.
+struct CycleOrigin {
+  int ring = -1;
+  int vertex = -1;
+};
+
+// One input polygon made vertex-complete and split into irreducible cycles [MK89 §2.2].
+struct PreparedPolygon {
+  PolygonType type = PolygonType::island;
+  std::vector<std::vector<int>> cycles;  // point ids, 2+ distinct vertices each
+  std::vector<CycleOrigin> origins;      // per cycle
+  std::vector<int> point_cycles;         // one-sided polygons: a single point id each
+  // Table 1: +1 when FAR(P) lies left of every edge, -1 after B was turned against A.
+  int far_sign = 1;
+  // The vertex ring [MK89 §3.3]: edges cycle after cycle, and their fragments.
+  std::vector<Edge> edges;
+  std::vector<int> cycle_first_edge;  // size cycles + 1
+  std::vector<Fragment> fragments;
+  std::vector<int> cycle_first_fragment;  // size cycles + 1
+};
+
+// The key of an undirected segment between two vertex ids.
+inline std::uint64_t segment_key(int u, int w) {
+  const auto lo = static_cast<std::uint64_t>(static_cast<std::uint32_t>(u < w ? u : w));
+  const auto hi = static_cast<std::uint64_t>(static_cast<std::uint32_t>(u < w ? w : u));
+  return (lo << 32) | hi;
+}
+
+template <Kernel K>
+struct Arrangement {
+  // Input points of A and B, deduplicated; the id of a point is its index, and ids follow
+  // lexicographic (x, y) order, so comparing ids compares points.
+  std::vector<typename K::Point> points;
+  // Rank of each input point's x among the distinct x values (non-decreasing in the id).
+  std::vector<int> x_rank;
+  // The proper crossings: vertex id num_points() + i is crossings[i].
+  std::vector<typename K::Vertex> crossings;
+  std::array<PreparedPolygon, 2> polygon;
+
+  int num_points() const { return static_cast<int>(points.size()); }
+  bool is_input_point(int id) const { return id < num_points(); }
+  int num_crossings() const { return static_cast<int>(crossings.size()); }
+  int num_vertices() const { return num_points() + num_crossings(); }
+  // Any vertex by id: input points are made on demand, so they are stored only once.
+  typename K::Vertex vertex(int id) const {
+    return id < num_points() ? K::vertex(points[id]) : crossings[id - num_points()];
+  }
+};
+
+}  // namespace mk

@@ -1,0 +1,124 @@
+// The Boolean operation: the six steps of the paper in order, with a trace hook between them.
+// [MK89 §3.1] [MK89 §3.2] (procedure polygonoperation)
+// Preconditions: coordinates finite (checked); everything else about the input is checked
+// in prepare(), which names the offending edges.
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "core/arrangement.hpp"
+#include "core/edge_fragment_table.hpp"
+#include "core/error.hpp"
+#include "core/prepare.hpp"
+#include "core/step1_orientation.hpp"
+#include "core/step2_vertex_rings.hpp"
+#include "core/step3_intersections.hpp"
+#include "core/step4_classify.hpp"
+#include "core/step5_select.hpp"
+#include "core/step6_construct.hpp"
+
+namespace mk {
+
+enum class Step : unsigned char { prepared, oriented, vertex_rings, intersections, classified, selected, constructed };
+
+struct Options {
+  Operation op = Operation::intersection;
+  bool regular = true;
+  EfOrganisation ef = EfOrganisation::hash;
+  PairSearch pair_search = PairSearch::sweep;
+};
+
+struct Stats {
+  std::size_t vertices_in = 0;  // distinct input points
+  std::size_t crossings = 0;
+  std::size_t vertices_out = 0;
+};
+
+template <Kernel K>
+struct BooleanResult {
+  Arrangement<K> arrangement;       // owns the vertices the cycles refer to
+  std::vector<ResultCycle> cycles;  // irreducible result polygons with their types
+  bool unbounded = false;
+  Stats stats;
+
+  typename K::Vertex vertex(int id) const { return arrangement.vertex(id); }
+};
+
+template <Kernel K>
+using TraceHook = std::function<void(Step, const Arrangement<K>&)>;
+
+namespace detail {
+
+template <Kernel K>
+BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const BasicPolygon<typename K::Point>& b,
+                                const Options& opt, const TraceHook<K>& trace) {
+  const auto hook = [&](Step s, const Arrangement<K>& arr) {
+    if (trace) trace(s, arr);
+  };
+  BooleanResult<K> res;
+  Arrangement<K>& arr = res.arrangement;
+  arr = prepare<K>(a, b, opt.pair_search);
+  hook(Step::prepared, arr);
+  normalize_orientations(arr, opt.op);  // step 1
+  hook(Step::oriented, arr);
+  build_vertex_rings(arr);  // step 2
+  hook(Step::vertex_rings, arr);
+  insert_intersections(arr, opt.pair_search);  // step 3
+  hook(Step::intersections, arr);
+  const Classification cls = classify_fragments(arr);  // step 4
+  hook(Step::classified, arr);
+  const SelectedFragments selected = select_fragments(arr, cls, opt.op, opt.regular);  // step 5
+  const auto build = [&](auto& ef) {
+    ef.insert_batch(selected.batch[0], opt.regular);
+    ef.insert_batch(selected.batch[1], opt.regular);
+    std::vector<bool> touched(static_cast<std::size_t>(arr.num_vertices()), false);
+    ef.for_each([&](const EfEntry& e) { touched[e.from] = touched[e.to] = true; });
+    hook(Step::selected, arr);
+    res.cycles = construct_result_cycles(arr, ef, opt.op);  // step 6
+    if (!opt.regular) {
+      for (const int v : select_isolated_points(arr, cls, opt.op, touched)) {
+        res.cycles.push_back({{v}, {}, PolygonType::island, true});
+      }
+    }
+  };
+  const std::size_t capacity = selected.batch[0].size() + selected.batch[1].size();
+  if (opt.ef == EfOrganisation::sorted) {
+    SortedEdgeTable ef(capacity);
+    build(ef);
+  } else {
+    HashEdgeTable ef(capacity);
+    build(ef);
+  }
+  hook(Step::constructed, arr);
+  const PolygonType ta = arr.polygon[0].type;
+  const PolygonType tb = arr.polygon[1].type;
+  res.unbounded = is_face_in_result(opt.op, ta == PolygonType::hole, tb == PolygonType::hole);
+  res.stats.vertices_in = arr.points.size();
+  res.stats.crossings = static_cast<std::size_t>(arr.num_crossings());
+  for (const auto& c : res.cycles) res.stats.vertices_out += c.vertices.size();
+  return res;
+}
+
+}  // namespace detail
+
+// Computes `opt.op` on A and B. P is mk::Point (doubles, checked to be finite) or the
+// kernel's own point type (for example exact rationals fed back from an earlier result).
+template <Kernel K, class P>
+BooleanResult<K> boolean_op(const BasicPolygon<P>& a, const BasicPolygon<P>& b, const Options& opt,
+                            const TraceHook<K>& trace = {}) {
+  if constexpr (std::is_same_v<P, Point>) {
+    validate_coordinates(a, "A");
+    validate_coordinates(b, "B");
+  }
+  if constexpr (std::is_same_v<P, typename K::Point>) {
+    return detail::run_boolean_op<K>(a, b, opt, trace);
+  } else {
+    return detail::run_boolean_op<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b), opt, trace);
+  }
+}
+
+}  // namespace mk

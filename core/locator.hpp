@@ -1,0 +1,87 @@
+// Winding numbers of a set of edges at points just beside an edge, answered through buckets
+// of x-ranks: each query tests only the edges whose x-range contains the query's x.
+// [MK89 §4.3] (locating one vertex per ring without a scan of the other polygon)
+// Preconditions: point ids follow lexicographic order; x_rank[id] is the rank of the
+// point's x among the distinct x values.
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include "core/arrangement.hpp"
+#include "predicates/ray.hpp"
+
+namespace mk {
+
+template <Kernel K>
+class WindingLocator {
+ public:
+  // Edges as (src, dst) point ids.
+  WindingLocator(const Arrangement<K>& arr, std::vector<std::pair<int, int>> edges)
+      : arr_(arr), edges_(std::move(edges)) {
+    const int ranks = arr.x_rank.empty() ? 1 : arr.x_rank.back() + 1;
+    buckets_ = std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(ranks), edges_.size() / 2 + 1));
+    ranks_ = ranks;
+    begin_.assign(buckets_ + 1, 0);
+    for (const auto& [a, b] : edges_) {
+      const auto [lo, hi] = bucket_span(a, b);
+      for (std::size_t k = lo; k <= hi; ++k) ++begin_[k + 1];
+    }
+    for (std::size_t k = 1; k < begin_.size(); ++k) begin_[k] += begin_[k - 1];
+    items_.resize(begin_.back());
+    std::vector<std::size_t> fill(begin_.begin(), begin_.end() - 1);
+    for (int e = 0; e < static_cast<int>(edges_.size()); ++e) {
+      const auto [lo, hi] = bucket_span(edges_[e].first, edges_[e].second);
+      for (std::size_t k = lo; k <= hi; ++k) items_[fill[k]++] = e;
+    }
+  }
+
+  // Winding number at the point just `side` of v -> t near v (see vertical_ray_crossing).
+  int winding(int v, int t, Side side) const {
+    const int r = arr_.x_rank[v];
+    const std::size_t k = bucket(r);
+    int wind = 0;
+    for (std::size_t i = begin_[k]; i < begin_[k + 1]; ++i) {
+      const auto [a, b] = edges_[items_[i]];
+      const int ra = arr_.x_rank[a];
+      const int rb = arr_.x_rank[b];
+      if (r < std::min(ra, rb) || r > std::max(ra, rb)) continue;
+      wind += vertical_ray_crossing<K>(arr_.points[v], arr_.points[t], side, arr_.points[a], arr_.points[b]);
+    }
+    return wind;
+  }
+
+  // Number of edges crossing the ray (their parity counts the cycles around the point).
+  int crossings(int v, int t, Side side) const {
+    const int r = arr_.x_rank[v];
+    const std::size_t k = bucket(r);
+    int count = 0;
+    for (std::size_t i = begin_[k]; i < begin_[k + 1]; ++i) {
+      const auto [a, b] = edges_[items_[i]];
+      const int ra = arr_.x_rank[a];
+      const int rb = arr_.x_rank[b];
+      if (r < std::min(ra, rb) || r > std::max(ra, rb)) continue;
+      count += vertical_ray_crossing<K>(arr_.points[v], arr_.points[t], side, arr_.points[a], arr_.points[b]) != 0;
+    }
+    return count;
+  }
+
+ private:
+  std::size_t bucket(int rank) const {
+    return static_cast<std::size_t>(static_cast<long long>(rank) * static_cast<long long>(buckets_) / ranks_);
+  }
+  std::pair<std::size_t, std::size_t> bucket_span(int a, int b) const {
+    const int ra = arr_.x_rank[a];
+    const int rb = arr_.x_rank[b];
+    return {bucket(std::min(ra, rb)), bucket(std::max(ra, rb))};
+  }
+
+  const Arrangement<K>& arr_;
+  std::vector<std::pair<int, int>> edges_;
+  std::size_t buckets_ = 1;
+  int ranks_ = 1;
+  std::vector<std::size_t> begin_;
+  std::vector<int> items_;
+};
+
+}  // namespace mk

@@ -1,0 +1,214 @@
+// Input preparation: identities for input points, and each polygon made vertex-complete and
+// split into irreducible cycles. [MK89 §2.2] (vertex-complete, irreducible parts)
+// [MK89 §3.3 end] (orientable polygons are made vertex-complete by inserting touching points)
+// Preconditions: coordinates are finite. Edges of one polygon that cross properly are
+// rejected with InvalidInput naming both edges.
+#pragma once
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "core/arrangement.hpp"
+#include "core/error.hpp"
+#include "core/pairs.hpp"
+#include "predicates/segments.hpp"
+
+namespace mk {
+
+namespace detail {
+
+// A ring as point ids, with the input index of each vertex kept for messages.
+struct IdRing {
+  std::vector<int> ids;
+  std::vector<int> input_index;
+};
+
+// Splits a closed sequence of point ids at repeated vertices into cycles with distinct
+// vertices: every closed polyline is a union of irreducible polygons [MK89 §2.2].
+inline void split_into_cycles(const IdRing& ring, int ring_index, std::vector<int>& where,
+                              PreparedPolygon& out) {
+  std::vector<int> stack;
+  std::vector<int> stack_input;
+  const auto emit = [&](std::size_t from) {
+    std::vector<int> cycle(stack.begin() + static_cast<std::ptrdiff_t>(from), stack.end());
+    if (cycle.size() == 1) {
+      out.point_cycles.push_back(cycle[0]);
+    } else {
+      out.cycles.push_back(std::move(cycle));
+      out.origins.push_back({ring_index, stack_input[from]});
+    }
+    for (std::size_t k = from + 1; k < stack.size(); ++k) where[stack[k]] = -1;
+    stack.resize(from + 1);
+    stack_input.resize(from + 1);
+  };
+  const std::size_t n = ring.ids.size();
+  for (std::size_t k = 0; k <= n; ++k) {
+    const int id = ring.ids[k % n];
+    if (where[id] >= 0) {
+      emit(static_cast<std::size_t>(where[id]));
+    } else {
+      where[id] = static_cast<int>(stack.size());
+      stack.push_back(id);
+      stack_input.push_back(ring.input_index[k % n]);
+    }
+  }
+  for (const int id : stack) where[id] = -1;
+}
+
+inline std::string edge_name(const char* poly, const IdRing& ring, int ring_index, std::size_t k) {
+  return std::string("polygon ") + poly + " ring " + std::to_string(ring_index) + " edge from vertex " +
+         std::to_string(ring.input_index[k]) + " to vertex " +
+         std::to_string(ring.input_index[(k + 1) % ring.ids.size()]);
+}
+
+// Inserts the points of one polygon that touch its own edges (orientable -> vertex-complete)
+// and rejects proper crossings.
+template <Kernel K>
+void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
+                          std::vector<IdRing>& rings, const char* poly_name, PairSearch search) {
+  struct EdgeRef {
+    int ring;
+    int k;
+  };
+  std::vector<SweepItem> items;
+  std::vector<EdgeRef> refs;
+  for (int r = 0; r < static_cast<int>(rings.size()); ++r) {
+    const auto& ids = rings[r].ids;
+    if (ids.size() < 2) continue;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      const int u = ids[k];
+      const int w = ids[(k + 1) % ids.size()];
+      items.push_back(sweep_item(u, w, 0, k > 0));
+      refs.push_back({r, static_cast<int>(k)});
+    }
+  }
+  std::vector<std::vector<int>> inserted(items.size());
+  for_each_candidate_pair<K>(pts, x_rank, items, false, search, [&](int i, int j) {
+    const SweepItem& a = items[i];
+    const SweepItem& b = items[j];
+    if (a.lo == b.lo && a.hi == b.hi) return;  // identical as sets: allowed [MK89 §2.2]
+    const auto rel = relate_segments_by_id<K>(pts, a.lo, a.hi, b.lo, b.hi);
+    if (rel.proper_crossing) {
+      const EdgeRef ea = refs[i];
+      const EdgeRef eb = refs[j];
+      throw InvalidInput(edge_name(poly_name, rings[ea.ring], ea.ring, ea.k) + " crosses " +
+                         edge_name(poly_name, rings[eb.ring], eb.ring, eb.k) +
+                         ": the polygon is not orientable and cannot be made vertex-complete");
+    }
+    if (rel.c_inside_ab) inserted[i].push_back(b.lo);
+    if (rel.d_inside_ab) inserted[i].push_back(b.hi);
+    if (rel.a_inside_cd) inserted[j].push_back(a.lo);
+    if (rel.b_inside_cd) inserted[j].push_back(a.hi);
+  });
+  std::size_t e = 0;
+  for (auto& ring : rings) {
+    if (ring.ids.size() < 2) continue;
+    IdRing out;
+    for (std::size_t k = 0; k < ring.ids.size(); ++k, ++e) {
+      const int u = ring.ids[k];
+      const int w = ring.ids[(k + 1) % ring.ids.size()];
+      out.ids.push_back(u);
+      out.input_index.push_back(ring.input_index[k]);
+      auto& ins = inserted[e];
+      if (ins.empty()) continue;
+      // Ids follow lexicographic order, which is monotone along any segment.
+      if (u < w) {
+        std::sort(ins.begin(), ins.end());
+      } else {
+        std::sort(ins.rbegin(), ins.rend());
+      }
+      ins.erase(std::unique(ins.begin(), ins.end()), ins.end());
+      for (const int id : ins) {
+        out.ids.push_back(id);
+        out.input_index.push_back(ring.input_index[k]);
+      }
+    }
+    ring = std::move(out);
+  }
+}
+
+}  // namespace detail
+
+// Gives every distinct input point of A and B an id in lexicographic order, makes both
+// polygons vertex-complete and splits their rings into irreducible cycles.
+template <Kernel K>
+Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPolygon<typename K::Point>& b,
+                       PairSearch search = PairSearch::sweep) {
+  Arrangement<K> arr;
+  const std::array<const BasicPolygon<typename K::Point>*, 2> in = {&a, &b};
+  struct Ref {
+    int poly;
+    int ring;
+    int index;
+  };
+  std::vector<Ref> refs;
+  for (int p = 0; p < 2; ++p) {
+    for (int r = 0; r < static_cast<int>(in[p]->rings.size()); ++r) {
+      for (int v = 0; v < static_cast<int>(in[p]->rings[r].size()); ++v) refs.push_back({p, r, v});
+    }
+  }
+  // Sort the points themselves (not indices into the rings): this runs on every vertex.
+  std::vector<std::pair<typename K::Point, int>> sorted;
+  sorted.reserve(refs.size());
+  for (int i = 0; i < static_cast<int>(refs.size()); ++i) {
+    sorted.emplace_back(in[refs[i].poly]->rings[refs[i].ring][refs[i].index], i);
+  }
+  std::sort(sorted.begin(), sorted.end(),
+            [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; });
+  std::vector<int> id_of(refs.size());
+  for (std::size_t k = 0; k < sorted.size(); ++k) {
+    if (k == 0 || compare_xy<K>(sorted[k - 1].first, sorted[k].first) != Sign::zero) {
+      arr.points.push_back(sorted[k].first);
+    }
+    id_of[sorted[k].second] = static_cast<int>(arr.points.size()) - 1;
+  }
+  arr.x_rank.resize(arr.points.size());
+  for (std::size_t i = 0; i < arr.points.size(); ++i) {
+    arr.x_rank[i] = i == 0 ? 0 : arr.x_rank[i - 1] + (K::compare_x(arr.points[i - 1], arr.points[i]) != Sign::zero);
+  }
+
+  std::vector<int> where(arr.points.size(), -1);
+  std::size_t ref = 0;
+  for (int p = 0; p < 2; ++p) {
+    PreparedPolygon& out = arr.polygon[p];
+    out.type = in[p]->type;
+    std::vector<detail::IdRing> rings(in[p]->rings.size());
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      for (std::size_t v = 0; v < in[p]->rings[r].size(); ++v, ++ref) {
+        const int id = id_of[ref];
+        auto& ids = rings[r].ids;
+        if (!ids.empty() && ids.back() == id) continue;  // duplicate consecutive vertex
+        ids.push_back(id);
+        rings[r].input_index.push_back(static_cast<int>(v));
+      }
+      auto& ids = rings[r].ids;
+      while (ids.size() > 1 && ids.back() == ids.front()) {  // closing vertex repeated
+        ids.pop_back();
+        rings[r].input_index.pop_back();
+      }
+    }
+    detail::make_vertex_complete<K>(arr.points, arr.x_rank, rings, p == 0 ? "A" : "B", search);
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      if (rings[r].ids.empty()) continue;
+      detail::split_into_cycles(rings[r], static_cast<int>(r), where, out);
+    }
+  }
+  return arr;
+}
+
+template <Kernel K>
+BasicPolygon<typename K::Point> to_kernel_polygon(const Polygon& p) {
+  BasicPolygon<typename K::Point> out;
+  out.type = p.type;
+  out.rings.reserve(p.rings.size());
+  for (const auto& ring : p.rings) {
+    auto& r = out.rings.emplace_back();
+    r.reserve(ring.size());
+    for (const auto& q : ring) r.push_back(K::point(q));
+  }
+  return out;
+}
+
+}  // namespace mk

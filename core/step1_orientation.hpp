@@ -1,0 +1,89 @@
+// Step 1: normalise the orientations of the input polygons.
+// [MK89 §3.1 step 1] [MK89 Table 1] [MK89 §2.2] (inclusion forest; nested parts alternate)
+// Preconditions: polygons prepared (vertex-complete, split into cycles with distinct
+// vertices). Input rings may run either way: each cycle's orientation is set from its
+// nesting depth, which is what FAR depends on.
+#pragma once
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "core/arrangement.hpp"
+#include "core/locator.hpp"
+#include "core/tables.hpp"
+#include "predicates/ray.hpp"
+
+namespace mk {
+
+namespace detail {
+
+// Whether a cycle of 3+ distinct vertices (a simple polygon) runs counterclockwise: the
+// turn at its lexicographically smallest vertex, which is always convex [MK89 §3.2,
+// procedure for orientation: the vertex with minimum X and the slopes of its two edges].
+template <Kernel K>
+bool is_counterclockwise(const Arrangement<K>& arr, const std::vector<int>& cycle) {
+  const auto n = cycle.size();
+  const auto m = static_cast<std::size_t>(std::min_element(cycle.begin(), cycle.end()) - cycle.begin());
+  const int prev = cycle[(m + n - 1) % n];
+  const int next = cycle[(m + 1) % n];
+  return K::orient2d(arr.points[prev], arr.points[cycle[m]], arr.points[next]) == Sign::positive;
+}
+
+// Parity of the number of cycles of `poly` whose FAR contains the points just inside
+// `cycle` (the cycle itself included): odd for cycles at even nesting depth.
+template <Kernel K>
+bool is_at_even_depth(const PreparedPolygon& poly, std::size_t c, const std::unordered_map<std::uint64_t, int>& edge_count,
+                      bool ccw, const WindingLocator<K>& locator) {
+  const auto& cycle = poly.cycles[c];
+  const auto n = cycle.size();
+  // An edge no other edge coincides with, so that only ancestors contain the points beside it.
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (edge_count.at(segment_key(cycle[i], cycle[(i + 1) % n])) == 1) {
+      k = i;
+      break;
+    }
+  }
+  return locator.crossings(cycle[k], cycle[(k + 1) % n], ccw ? Side::left : Side::right) % 2 == 1;
+}
+
+}  // namespace detail
+
+// Orients every cycle with FAR on its left (counterclockwise at even nesting depth), then
+// turns B against A where Table 1 says so.
+template <Kernel K>
+void normalize_orientations(Arrangement<K>& arr, Operation op) {
+  for (auto& poly : arr.polygon) {
+    // A polygon with one cycle has it at depth 0; only nested parts need the ray test.
+    const bool single = poly.cycles.size() == 1;
+    std::unordered_map<std::uint64_t, int> edge_count;
+    std::vector<std::pair<int, int>> edges;
+    if (!single) {
+      for (const auto& cycle : poly.cycles) {
+        for (std::size_t i = 0; i < cycle.size(); ++i) {
+          ++edge_count[segment_key(cycle[i], cycle[(i + 1) % cycle.size()])];
+          edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()]});
+        }
+      }
+    }
+    const WindingLocator<K> locator(arr, std::move(edges));
+    std::vector<bool> flip(poly.cycles.size(), false);
+    for (std::size_t c = 0; c < poly.cycles.size(); ++c) {
+      if (poly.cycles[c].size() < 3) continue;  // degenerate: both orientations at once
+      const bool ccw = detail::is_counterclockwise(arr, poly.cycles[c]);
+      const bool even = single || detail::is_at_even_depth(poly, c, edge_count, ccw, locator);
+      flip[c] = ccw != even;
+    }
+    for (std::size_t c = 0; c < poly.cycles.size(); ++c) {
+      if (flip[c]) std::reverse(poly.cycles[c].begin(), poly.cycles[c].end());
+    }
+  }
+  PreparedPolygon& b = arr.polygon[1];
+  const auto mutual = kTable1[op_index(op)][type_index(arr.polygon[0].type)][type_index(b.type)];
+  if (mutual == MutualOrientation::opposite) {
+    for (auto& cycle : b.cycles) std::reverse(cycle.begin(), cycle.end());
+    b.far_sign = -1;
+  }
+}
+
+}  // namespace mk

@@ -1,0 +1,27 @@
+// Step 2: insert the original vertices of A and B into their vertex rings AV and BV.
+// [MK89 §3.1 step 2] [MK89 §3.3] (vertex rings as linked lists)
+// Preconditions: orientations normalised (step 1). Vertex classification, which the paper
+// does here by point-in-polygon tests, is done in step 4 by walking the rings [MK89 §4.3].
+#pragma once
+
+#include "core/arrangement.hpp"
+
+namespace mk {
+
+// Lays out every cycle's edges in ring order; fragments follow in step 3.
+template <Kernel K>
+void build_vertex_rings(Arrangement<K>& arr) {
+  for (auto& poly : arr.polygon) {
+    poly.edges.clear();
+    poly.cycle_first_edge.assign(1, 0);
+    for (int c = 0; c < static_cast<int>(poly.cycles.size()); ++c) {
+      const auto& cycle = poly.cycles[c];
+      for (std::size_t i = 0; i < cycle.size(); ++i) {
+        poly.edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()], c, {}});
+      }
+      poly.cycle_first_edge.push_back(static_cast<int>(poly.edges.size()));
+    }
+  }
+}
+
+}  // namespace mk

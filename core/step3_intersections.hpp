@@ -1,0 +1,114 @@
+// Step 3: find the intersection points of A's and B's edges and insert them, in order, into
+// both vertex rings; then cut the rings into edge fragments.
+// [MK89 §3.1 step 3] [MK89 §4.3] (sub-quadratic intersection search)
+// Preconditions: step 2 done. Both polygons vertex-complete, so a proper crossing is
+// identified by its pair of edges, edges of one polygon that coincide as sets counting as
+// one segment (BRIEF.md section 2): crossings are never compared by coordinates.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+
+#include "core/arrangement.hpp"
+#include "core/error.hpp"
+#include "core/pairs.hpp"
+#include "predicates/segments.hpp"
+
+namespace mk {
+
+namespace detail {
+struct PairHash {
+  std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& p) const {
+    return std::hash<std::uint64_t>()(p.first * 0x9E3779B97F4A7C15ULL ^ p.second);
+  }
+};
+}  // namespace detail
+
+// A kernel that rounds crossing points may overflow (inputs near 1e300) or divide by a
+// rounded-to-zero denominator: its failure is reported, never written out as NaN or inf.
+template <Kernel K>
+void check_finite_crossing(const Arrangement<K>& arr, const Edge& a, const Edge& b) {
+  const mk::Point p = K::approx(arr.crossings.back());
+  if (std::isfinite(p.x) && std::isfinite(p.y)) return;
+  const auto at = [&](int id) {
+    const mk::Point q = K::approx(arr.vertex(id));
+    std::ostringstream s;
+    s.precision(17);
+    s << "(" << q.x << " " << q.y << ")";
+    return s.str();
+  };
+  throw KernelFailure(std::string("kernel ") + std::string(K::name) + ": the crossing point of edges " + at(a.src) +
+                      "-" + at(a.dst) + " of A and " + at(b.src) + "-" + at(b.dst) +
+                      " of B is not finite in its arithmetic");
+}
+
+template <Kernel K>
+void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::sweep) {
+  auto& ea = arr.polygon[0].edges;
+  auto& eb = arr.polygon[1].edges;
+  std::vector<SweepItem> items;
+  items.reserve(ea.size() + eb.size());
+  for (int g = 0; g < 2; ++g) {
+    const PreparedPolygon& poly = arr.polygon[g];
+    for (std::size_t c = 0; c + 1 < poly.cycle_first_edge.size(); ++c) {
+      for (int e = poly.cycle_first_edge[c]; e < poly.cycle_first_edge[c + 1]; ++e) {
+        items.push_back(sweep_item(poly.edges[e].src, poly.edges[e].dst, g, e > poly.cycle_first_edge[c]));
+      }
+    }
+  }
+  const int na = static_cast<int>(ea.size());
+  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
+  const auto& pts = arr.points;
+  for_each_candidate_pair<K>(pts, arr.x_rank, items, true, search, [&](int i, int j) {
+    if (i > j) std::swap(i, j);  // i indexes A, j indexes B
+    Edge& a = ea[i];
+    Edge& b = eb[j - na];
+    if (items[i].lo == items[j].lo && items[i].hi == items[j].hi) return;  // shared_edge
+    const auto rel = relate_segments_by_id<K>(pts, a.src, a.dst, b.src, b.dst);
+    if (rel.proper_crossing) {
+      const auto key = std::make_pair(segment_key(a.src, a.dst), segment_key(b.src, b.dst));
+      auto [it, fresh] = crossing_id.try_emplace(key, arr.num_vertices());
+      if (fresh) {
+        arr.crossings.push_back(K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst]));
+        if constexpr (!K::is_exact) check_finite_crossing<K>(arr, a, b);
+      }
+      a.inserted.push_back(it->second);
+      b.inserted.push_back(it->second);
+      return;
+    }
+    // vertex_on_edge and collinear_overlap: endpoints strictly inside the other edge.
+    if (rel.c_inside_ab) a.inserted.push_back(b.src);
+    if (rel.d_inside_ab) a.inserted.push_back(b.dst);
+    if (rel.a_inside_cd) b.inserted.push_back(a.src);
+    if (rel.b_inside_cd) b.inserted.push_back(a.dst);
+  });
+
+  for (auto& poly : arr.polygon) {
+    poly.fragments.clear();
+    poly.cycle_first_fragment.assign(1, 0);
+    for (std::size_t c = 0; c + 1 < poly.cycle_first_edge.size(); ++c) {
+      for (int e = poly.cycle_first_edge[c]; e < poly.cycle_first_edge[c + 1]; ++e) {
+        Edge& edge = poly.edges[e];
+        auto& ins = edge.inserted;
+        const auto& s = arr.points[edge.src];
+        const auto& d = arr.points[edge.dst];
+        std::sort(ins.begin(), ins.end(), [&](int x, int y) {
+          return x != y && K::compare_along(s, d, arr.vertex(x), arr.vertex(y)) == Sign::negative;
+        });
+        ins.erase(std::unique(ins.begin(), ins.end()), ins.end());
+        int from = edge.src;
+        for (const int id : ins) {
+          poly.fragments.push_back({from, id, e, {}, {}});
+          from = id;
+        }
+        poly.fragments.push_back({from, edge.dst, e, {}, {}});
+      }
+      poly.cycle_first_fragment.push_back(static_cast<int>(poly.fragments.size()));
+    }
+  }
+}
+
+}  // namespace mk

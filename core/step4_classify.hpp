@@ -1,0 +1,103 @@
+// Step 4: classify the edge fragments. For every fragment, the winding depth of A and of B
+// just left and right of it, from which inside / outside / boundary-same /
+// boundary-opposite follow [MK89 §3.1 step 4].
+// [MK89 §4.3] (walk each vertex ring from one located vertex, updating at boundary points:
+// Table 5's angle rules, generalised to vertices of any degree)
+// Preconditions: step 3 done. Only orientations of input points are evaluated: crossing
+// points are never located by coordinates.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/arrangement.hpp"
+#include "core/error.hpp"
+#include "core/incidence.hpp"
+#include "core/locator.hpp"
+#include "predicates/ray.hpp"
+
+namespace mk {
+
+// Everything step 5 needs about the arrangement besides the fragments themselves.
+struct Classification {
+  std::array<RayTable, 2> rays;
+};
+
+template <Kernel K>
+WindingLocator<K> make_locator(const Arrangement<K>& arr, const PreparedPolygon& x) {
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(x.edges.size());
+  for (const auto& e : x.edges) edges.push_back({e.src, e.dst});
+  return WindingLocator<K>(arr, std::move(edges));
+}
+
+namespace detail {
+
+// Walks one cycle of polygon p and records the winding depth of polygon x on both sides of
+// each fragment. Crossing a ray of x counterclockwise raises the depth when the fragment
+// leaves the vertex (x's region is on its left) and lowers it when it arrives.
+template <Kernel K>
+void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, const Classification& cls,
+                const WindingLocator<K>& x_locator) {
+  const PreparedPolygon& x = arr.polygon[xi];
+  const RayTable& x_rays = cls.rays[xi];
+  const DirectionOrder<K> order(arr.points);
+  const int first = p.cycle_first_fragment[c];
+  const int last = p.cycle_first_fragment[c + 1];
+  const Edge& e0 = p.edges[p.fragments[first].edge];
+  // [MK89 §4.3 step 1] One located point per ring: just left of its first fragment.
+  const int anchor = x_locator.winding(e0.src, e0.dst, Side::left);
+  int left = anchor;
+  for (int i = first; i < last; ++i) {
+    Fragment& f = p.fragments[i];
+    const auto [same, opposite] = fragments_along(x, x_rays, f.from, f.to);
+    f.far_left[xi] = x.far_sign * left;
+    f.far_right[xi] = x.far_sign * (left - (same - opposite));
+    const Fragment& next = p.fragments[i + 1 < last ? i + 1 : first];
+    const Edge& ein = p.edges[f.edge];
+    const Edge& eout = p.edges[next.edge];
+    const Direction back{ein.dst, ein.src};
+    const Direction ahead{eout.src, eout.dst};
+    // The left side of `next` is reached from the left side of f by sweeping clockwise
+    // from `back` to `ahead`, i.e. through the counterclockwise sector ahead -> back.
+    int delta = 0;
+    for (const Ray& r : x_rays.at(f.to)) {
+      // A ray along `back` or `ahead` themselves lies on the sector's boundary, never
+      // strictly inside: at the vertices of p's own ring no predicate is evaluated.
+      if (r.dir == back || r.dir == ahead) continue;
+      if (order.is_in_ccw_sector(ahead, back, r.dir)) delta += r.sign;
+    }
+    left -= delta;
+  }
+  if (left != anchor) {
+    throw KernelFailure(std::string("kernel ") + std::string(K::name) +
+                        ": the classification of a vertex ring does not close (inconsistent predicates)");
+  }
+}
+
+}  // namespace detail
+
+template <Kernel K>
+Classification classify_fragments(Arrangement<K>& arr) {
+  const int nv = arr.num_vertices();
+  Classification cls{{RayTable(arr.polygon[0], nv), RayTable(arr.polygon[1], nv)}};
+  const std::array<WindingLocator<K>, 2> locators{make_locator(arr, arr.polygon[0]), make_locator(arr, arr.polygon[1])};
+  for (auto& p : arr.polygon) {
+    for (int c = 0; c + 1 < static_cast<int>(p.cycle_first_fragment.size()); ++c) {
+      detail::walk_cycle(arr, p, c, 0, cls, locators[0]);
+      detail::walk_cycle(arr, p, c, 1, cls, locators[1]);
+    }
+  }
+  return cls;
+}
+
+// FAR depth of polygon x at input point v, which lies on none of x's edges.
+template <Kernel K>
+int far_depth_at(const Arrangement<K>& arr, int xi, int v) {
+  const PreparedPolygon& x = arr.polygon[xi];
+  if (arr.num_points() < 2) return 0;
+  const int t = v == 0 ? 1 : 0;  // any other input point: v is on no edge of x
+  return x.far_sign * make_locator(arr, x).winding(v, t, Side::left);
+}
+
+}  // namespace mk

@@ -1,0 +1,201 @@
+// Step 5: select the edge fragments that bound the result and organise them in EF.
+// [MK89 §3.1 step 5] [MK89 Table 2] [MK89 Table 3] [MK89 §3.2] (InsertEF; degenerate
+// single-point fragments)
+// Preconditions: step 4 done. Fragments that bound their own polygon's region on exactly
+// one side (the paper's domain of regular parts) are selected by Tables 2 and 3; the others
+// (internal double edges, two-sided degenerate parts) by the set operation itself, which
+// the tables are a special case of (paper-notes.md, deviations).
+#pragma once
+
+#include <vector>
+
+#include "core/arrangement.hpp"
+#include "core/edge_fragment_table.hpp"
+#include "core/step4_classify.hpp"
+#include "core/tables.hpp"
+
+namespace mk {
+
+// [MK89 §3.1 step 4] The four classes of a fragment relative to the other polygon.
+enum class FragmentClass : unsigned char { inside, outside, boundary_same, boundary_opposite };
+
+// Whether a face with the given memberships in A's and B's regions is in the result. The
+// regular and non-regular operations agree on open faces.
+constexpr bool is_face_in_result(Operation op, bool in_a, bool in_b) {
+  switch (op) {
+    case Operation::intersection: return in_a && in_b;
+    case Operation::union_: return in_a || in_b;
+    case Operation::difference: return in_a && !in_b;
+    case Operation::symmetric_difference: return in_a != in_b;
+  }
+  return false;
+}
+
+// Whether a point (or segment) is in the closed-set result [MK89 §2.3], from its membership
+// in the closed sets A and B and in their interiors.
+constexpr bool is_in_closed_result(Operation op, bool in_a, bool int_a, bool in_b, bool int_b) {
+  switch (op) {
+    case Operation::intersection: return in_a && in_b;
+    case Operation::union_: return in_a || in_b;
+    case Operation::difference: return in_a && !int_b;
+    case Operation::symmetric_difference: return (in_a && !int_b) || (in_b && !int_a);
+  }
+  return false;
+}
+
+constexpr bool is_in_region(PolygonType t, int far_depth) { return (far_depth > 0) != (t == PolygonType::hole); }
+
+// What the set operation keeps of one fragment.
+enum class Selection : unsigned char { none, as_is, reversed, both };
+
+struct FragmentSides {
+  bool a_left, a_right, b_left, b_right;  // region memberships beside the fragment
+  bool on_a, on_b;                        // the fragment lies on A's / B's edges
+};
+
+// The general rule: keep the fragment where the result lies on exactly one side (oriented so
+// that the result is on the side Table 4 expects), and in non-regular output keep both
+// directions where the result contains the fragment but neither side.
+constexpr Selection select_by_set_operation(Operation op, bool regular, PolygonType type_a, const FragmentSides& s) {
+  const bool left = is_face_in_result(op, s.a_left, s.b_left);
+  const bool right = is_face_in_result(op, s.a_right, s.b_right);
+  const bool result_on_left = type_a == PolygonType::island;
+  if (left != right) return left == result_on_left ? Selection::as_is : Selection::reversed;
+  if (regular || left) return Selection::none;
+  const bool in_a = s.on_a || s.a_left || s.a_right;
+  const bool in_b = s.on_b || s.b_left || s.b_right;
+  const bool dangling = is_in_closed_result(op, in_a, s.a_left && s.a_right, in_b, s.b_left && s.b_right);
+  return dangling ? Selection::both : Selection::none;
+}
+
+constexpr Selection selection_of(Keep k) {
+  return k == Keep::as_is ? Selection::as_is : (k == Keep::reversed ? Selection::reversed : Selection::none);
+}
+
+constexpr Selection selection_of_copies(std::uint8_t copies) {
+  return copies == 0 ? Selection::none : (copies == 1 ? Selection::as_is : Selection::both);
+}
+
+// The paper's rule [MK89 Tables 2, 3] for a fragment of polygon p (0 = A, 1 = B) in class c.
+constexpr Selection select_by_tables(Operation op, bool regular, PolygonType ta, PolygonType tb, int p,
+                                     FragmentClass c) {
+  const auto& t2 = kTable2[op_index(op)][type_index(ta)][type_index(tb)];
+  const auto& sel = p == 0 ? t2.a : t2.b;
+  const auto& t3 = kTable3[regular ? 1 : 0][op_index(op)][type_index(ta)][type_index(tb)];
+  switch (c) {
+    case FragmentClass::inside: return selection_of(sel.inside);
+    case FragmentClass::outside: return selection_of(sel.outside);
+    case FragmentClass::boundary_same: return selection_of_copies(t3.same);
+    case FragmentClass::boundary_opposite: return selection_of_copies(t3.opposite);
+  }
+  return Selection::none;
+}
+
+// The selected fragments of A and of B, in the form EF takes them.
+struct SelectedFragments {
+  std::array<std::vector<EfEntry>, 2> batch;
+};
+
+template <Kernel K>
+SelectedFragments select_fragments(const Arrangement<K>& arr, const Classification& cls, Operation op,
+                                   bool regular) {
+  SelectedFragments out;
+  const PolygonType ta = arr.polygon[0].type;
+  const PolygonType tb = arr.polygon[1].type;
+  for (int p = 0; p < 2; ++p) {
+    const PreparedPolygon& poly = arr.polygon[p];
+    const int q = 1 - p;
+    for (const Fragment& f : poly.fragments) {
+      const bool own_left = f.far_left[p] > 0;
+      const bool own_right = f.far_right[p] > 0;
+      const bool other_left = f.far_left[q] > 0;
+      const bool other_right = f.far_right[q] > 0;
+      const auto [same, opposite] = fragments_along(arr.polygon[q], cls.rays[q], f.from, f.to);
+      // A regular part of its own polygon: its FAR on the side Table 1 put it.
+      const bool proper_own = poly.far_sign > 0 ? (own_left && !own_right) : (!own_left && own_right);
+      const bool proper_other = other_left != other_right ? same + opposite == 1 : same + opposite == 0;
+      Selection s = Selection::none;
+      if (proper_own && proper_other) {
+        FragmentClass c = FragmentClass::outside;
+        if (other_left != other_right) {
+          c = same == 1 ? FragmentClass::boundary_same : FragmentClass::boundary_opposite;
+        } else if (other_left) {
+          c = FragmentClass::inside;
+        }
+        s = select_by_tables(op, regular, ta, tb, p, c);
+      } else {
+        const FragmentSides sides{is_in_region(ta, f.far_left[0]),  is_in_region(ta, f.far_right[0]),
+                                  is_in_region(tb, f.far_left[1]),  is_in_region(tb, f.far_right[1]),
+                                  p == 0 || same + opposite > 0, p == 1 || same + opposite > 0};
+        s = select_by_set_operation(op, regular, ta, sides);
+      }
+      const Edge& e = poly.edges[f.edge];
+      const Direction dir{e.src, e.dst};
+      if (s == Selection::as_is || s == Selection::both) out.batch[p].push_back({f.from, f.to, dir, true});
+      if (s == Selection::reversed || s == Selection::both) {
+        out.batch[p].push_back({f.to, f.from, dir.reversed(), true});
+      }
+    }
+  }
+  return out;
+}
+
+// Isolated points of the non-regular result [MK89 §3.2: degenerate single-point fragments
+// are selected only without regularity and only where no other fragment is adjacent]: points
+// of the closed-set result with no result face or selected fragment around them.
+template <Kernel K>
+std::vector<int> select_isolated_points(const Arrangement<K>& arr, const Classification& cls, Operation op,
+                                        const std::vector<bool>& touched) {
+  const PolygonType ta = arr.polygon[0].type;
+  const PolygonType tb = arr.polygon[1].type;
+  std::vector<int> candidates;
+  for (int v = 0; v < arr.num_points(); ++v) {
+    if (!cls.rays[0].at(v).empty() && !cls.rays[1].at(v).empty()) candidates.push_back(v);
+  }
+  for (const auto& poly : arr.polygon) {
+    for (const int v : poly.point_cycles) candidates.push_back(v);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  std::array<std::vector<bool>, 2> is_point_cycle;
+  for (int p = 0; p < 2; ++p) {
+    is_point_cycle[p].assign(arr.points.size(), false);
+    for (const int v : arr.polygon[p].point_cycles) is_point_cycle[p][v] = true;
+  }
+  std::vector<int> out;
+  for (const int v : candidates) {
+    if (touched[v]) continue;
+    // The faces around v, as (in A's region, in B's region) pairs.
+    bool any_a = false, all_a = true, any_b = false, all_b = true, any_result = false;
+    bool has_faces = false;
+    for (int p = 0; p < 2; ++p) {
+      for (const Ray& r : cls.rays[p].at(v)) {
+        const Fragment& f = arr.polygon[p].fragments[r.fragment];
+        for (int side = 0; side < 2; ++side) {
+          const bool in_a = is_in_region(ta, side == 0 ? f.far_left[0] : f.far_right[0]);
+          const bool in_b = is_in_region(tb, side == 0 ? f.far_left[1] : f.far_right[1]);
+          has_faces = true;
+          any_a = any_a || in_a;
+          all_a = all_a && in_a;
+          any_b = any_b || in_b;
+          all_b = all_b && in_b;
+          any_result = any_result || is_face_in_result(op, in_a, in_b);
+        }
+      }
+    }
+    if (!has_faces) {  // a one-sided polygon away from every edge
+      const bool in_a = is_in_region(ta, far_depth_at(arr, 0, v));
+      const bool in_b = is_in_region(tb, far_depth_at(arr, 1, v));
+      any_a = all_a = in_a;
+      any_b = all_b = in_b;
+      any_result = is_face_in_result(op, in_a, in_b);
+    }
+    if (any_result) continue;
+    const bool on_a = !cls.rays[0].at(v).empty() || is_point_cycle[0][v];
+    const bool on_b = !cls.rays[1].at(v).empty() || is_point_cycle[1][v];
+    if (is_in_closed_result(op, on_a || any_a, all_a, on_b || any_b, all_b)) out.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace mk

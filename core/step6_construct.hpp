@@ -1,0 +1,127 @@
+// Step 6: construct the result polygons from EF and find their types.
+// [MK89 §3.1 step 6] [MK89 Table 4] [MK89 §4.1, Theorem 2] (every maximal sequence of
+// selected fragments decomposes into edge-disjoint cycles)
+// Preconditions: EF filled by step 5. Cycles are traced so that the result region stays on
+// one side: at a vertex with several selected fragments the walk takes the first one
+// turning towards the region, so cycles touch but never cross at shared vertices.
+#pragma once
+
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/arrangement.hpp"
+#include "core/edge_fragment_table.hpp"
+#include "core/error.hpp"
+#include "core/tables.hpp"
+#include "predicates/directions.hpp"
+
+namespace mk {
+
+// One irreducible result polygon [MK89 §2.2]: a simple cycle (3+ vertices), a two-sided
+// segment (2) or a one-sided point (1), as vertex ids of the arrangement.
+struct ResultCycle {
+  std::vector<int> vertices;
+  std::vector<Direction> directions;  // direction of travel of each edge (empty for points)
+  PolygonType type = PolygonType::island;
+  bool counterclockwise = true;  // meaningful for 3+ vertices
+};
+
+namespace detail {
+
+// The turning number of a closed sequence of directions: +1 counterclockwise, -1 clockwise.
+template <Kernel K>
+int turning_number(const DirectionOrder<K>& order, const std::vector<Direction>& dirs) {
+  int turns = 0;
+  for (std::size_t i = 0; i < dirs.size(); ++i) turns += order.wraps(dirs[i], dirs[(i + 1) % dirs.size()]);
+  return turns;
+}
+
+}  // namespace detail
+
+template <Kernel K, class Table>
+std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Table& ef, Operation op) {
+  const DirectionOrder<K> order(arr.points);
+  const PolygonType ta = arr.polygon[0].type;
+  const PolygonType tb = arr.polygon[1].type;
+  const PolygonType ccw_type = kTable4[op_index(op)][type_index(ta)][type_index(tb)];
+  const bool result_on_left = ta == PolygonType::island;
+  std::vector<ResultCycle> out;
+
+  // The next fragment after arriving at v along `in`: the first one met turning from the
+  // reversed arrival direction towards the result region (clockwise when the region lies
+  // left). The reverse fragment itself, if selected, comes first: a two-sided part.
+  const auto choose_next = [&](int v, Direction in) -> EfEntry* {
+    EfEntry* best = nullptr;
+    const Direction back = in.reversed();
+    ef.for_each_from(v, [&](EfEntry& e) {
+      if (best == nullptr) {
+        best = &e;
+        return;
+      }
+      if (order.compare(best->dir, back) == Sign::zero) return;
+      if (order.compare(e.dir, back) == Sign::zero) {
+        best = &e;
+        return;
+      }
+      // e comes first when it lies in the sweep from `back` to `best` in the turning sense.
+      const bool e_first = result_on_left ? !order.is_in_ccw_sector(back, best->dir, e.dir)
+                                          : order.is_in_ccw_sector(back, best->dir, e.dir);
+      if (e_first) best = &e;
+    });
+    return best;
+  };
+
+  std::vector<int> position(static_cast<std::size_t>(arr.num_vertices()), -1);  // vertex -> index in the current path
+  std::vector<int> path_vertices;
+  std::vector<Direction> path_dirs;
+  const auto emit = [&](std::size_t from) {
+    ResultCycle cycle;
+    cycle.vertices.assign(path_vertices.begin() + static_cast<std::ptrdiff_t>(from), path_vertices.end());
+    cycle.directions.assign(path_dirs.begin() + static_cast<std::ptrdiff_t>(from), path_dirs.end());
+    for (std::size_t k = from + 1; k < path_vertices.size(); ++k) position[path_vertices[k]] = -1;
+    path_vertices.resize(from + 1);
+    path_dirs.resize(from);
+    if (cycle.vertices.size() >= 3) {
+      const int turns = detail::turning_number(order, cycle.directions);
+      if (turns != 1 && turns != -1) {
+        throw KernelFailure(std::string("kernel ") + std::string(K::name) +
+                            ": a result cycle is not a simple polygon (turning number " + std::to_string(turns) + ")");
+      }
+      cycle.counterclockwise = turns == 1;
+      cycle.type = cycle.counterclockwise ? ccw_type : opposite(ccw_type);
+    }
+    out.push_back(std::move(cycle));
+  };
+
+  std::vector<EfEntry*> starts;
+  ef.for_each([&](EfEntry& e) { starts.push_back(&e); });
+  for (EfEntry* start : starts) {
+    if (!start->alive) continue;
+    start->alive = false;
+    path_vertices.assign({start->from, start->to});
+    path_dirs.assign({start->dir});
+    position[start->from] = 0;
+    if (start->to == start->from) throw KernelFailure("degenerate fragment");
+    position[start->to] = 1;
+    while (path_vertices.size() > 1) {  // ends when a cycle closes at the start vertex
+      const int v = path_vertices.back();
+      EfEntry* next = choose_next(v, path_dirs.back());
+      if (next == nullptr) {
+        throw KernelFailure(std::string("kernel ") + std::string(K::name) + ": a result polygon does not close");
+      }
+      next->alive = false;
+      path_dirs.push_back(next->dir);
+      if (position[next->to] >= 0) {
+        emit(static_cast<std::size_t>(position[next->to]));
+      } else {
+        position[next->to] = static_cast<int>(path_vertices.size());
+        path_vertices.push_back(next->to);
+      }
+    }
+    position[path_vertices[0]] = -1;
+  }
+  return out;
+}
+
+}  // namespace mk

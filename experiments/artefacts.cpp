@@ -1,0 +1,372 @@
+// Failure artefacts: regression case files and SVG pictures, each made in a forked child
+// with a time limit (the failing kernel runs again to draw its output).
+// [MK89 §3.3] [MK89 §2.2] (rings nest: shells and holes for WKT)
+// Preconditions: see artefacts.hpp.
+#include "experiments/artefacts.hpp"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "api/mkbool.hpp"
+#include "core/error.hpp"
+#include "experiments/generators.hpp"
+#include "experiments/verdict.hpp"
+#include "io/native_json.hpp"
+#include "io/svg.hpp"
+#include "io/wkt.hpp"
+
+namespace mk::experiments {
+
+namespace fs = std::filesystem;
+
+Operation parse_operation(const std::string& name) {
+  for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
+                             Operation::symmetric_difference}) {
+    if (operation_name(op) == name) return op;
+  }
+  throw std::invalid_argument("unknown operation '" + name + "' (intersection, union, difference, xor)");
+}
+
+namespace {
+
+std::string number(double v) {
+  char buf[64];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+
+// Whether ring r lies inside ring s (decided at a vertex of r not on s; rings of a valid
+// polygon do not cross). Empty when every vertex of r lies on s.
+std::optional<bool> is_ring_inside(const Ring& r, const Ring& s) {
+  for (const Point& p : r) {
+    const mpq_class px(p.x), py(p.y);
+    bool on = false, in = false;
+    for (std::size_t i = 0; i < s.size() && !on; ++i) {
+      const Point& a = s[i];
+      const Point& b = s[(i + 1) % s.size()];
+      const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y);
+      const mpq_class cross = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+      if (cross == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+          p.y <= std::max(a.y, b.y)) {
+        on = true;
+      } else if ((ay > py) != (by > py) && ((by > ay) ? cross > 0 : cross < 0)) {
+        in = !in;
+      }
+    }
+    if (!on) return in;
+  }
+  return std::nullopt;
+}
+
+// WKT when the polygon is island-type, every ring has 3+ points, and its rings come as
+// shells each followed by the holes directly inside it; empty otherwise.
+std::string as_wkt(const Polygon& p) {
+  if (p.type != PolygonType::island || p.rings.empty()) return {};
+  const std::size_t n = p.rings.size();
+  std::vector<int> depth(n, 0);
+  std::vector<int> parent(n, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.rings[i].size() < 3) return {};
+    for (std::size_t j = 0; j < n; ++j) {
+      if (i == j) continue;
+      const auto in = is_ring_inside(p.rings[i], p.rings[j]);
+      if (!in) return {};
+      if (*in) ++depth[i];
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (depth[i] % 2 == 0) continue;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j != i && depth[j] == depth[i] - 1 && is_ring_inside(p.rings[i], p.rings[j]).value_or(false)) {
+        parent[i] = static_cast<int>(j);
+      }
+    }
+  }
+  std::string parts;
+  std::size_t shells = 0;
+  for (std::size_t i = 0; i < n;) {
+    if (depth[i] % 2 != 0) return {};  // a hole not right after its shell
+    std::string part = "(";
+    std::size_t j = i;
+    do {
+      part += j == i ? "(" : ", (";
+      for (const Point& q : p.rings[j]) part += number(q.x) + " " + number(q.y) + ", ";
+      part += number(p.rings[j][0].x) + " " + number(p.rings[j][0].y) + ")";
+      ++j;
+    } while (j < n && depth[j] % 2 != 0 && parent[j] == static_cast<int>(i));
+    parts += (shells++ > 0 ? ", " : "") + part + ")";
+    i = j;
+  }
+  return shells == 1 ? "POLYGON " + parts : "MULTIPOLYGON (" + parts + ")";
+}
+
+std::string one_line(std::string s) {
+  for (char& c : s) {
+    if (c == '\n') c = ' ';
+  }
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+Polygon read_polygon_line(const std::string& line) {
+  if (!line.empty() && line[0] == '{') return read_native_json(line);
+  return to_polygon(read_wkt(line));
+}
+
+// Runs f in a forked child, killing it after `timeout` seconds. True when it finished.
+bool run_isolated(const std::function<void()>& f, double timeout) {
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) return false;
+  if (pid == 0) {
+    try {
+      f();
+    } catch (...) {
+      _exit(1);
+    }
+    _exit(0);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  int status = 0;
+  while (::waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+CaseSpec spec_of(const ResultRow& r) { return {r.generator, r.variant, parse_params(r.params), r.seed}; }
+
+std::string run_suffix(const ResultRow& r) { return "_" + r.op + (r.regular ? "" : "_nonregular"); }
+
+// Which failures to picture first: the worst, and among valid outputs those whose area
+// error shows a wrong decision rather than a crossing point rounded differently.
+int severity(const ResultRow& r) {
+  switch (r.verdict) {
+    case Verdict::crash: return 0;
+    case Verdict::timeout: return 1;
+    case Verdict::invalid_output: return 2;
+    case Verdict::error: return 3;
+    default: return r.area_error && *r.area_error > 1e-12 ? 4 : 5;
+  }
+}
+
+}  // namespace
+
+std::string regression_case_text(const Polygon& a, const Polygon& b, Operation op, bool regular,
+                                 const std::vector<std::string>& comments) {
+  std::string out;
+  for (const Polygon* p : {&a, &b}) {
+    std::string line = as_wkt(*p);
+    if (line.empty()) line = one_line(write_native_json(*p));
+    out += line + "\n";
+  }
+  out += std::string(operation_name(op)) + "\n" + (regular ? "regular" : "nonregular") + "\n";
+  for (const auto& c : comments) out += "# " + c + "\n";
+  return out;
+}
+
+RegressionCase read_regression_case(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line[0] != '#') lines.push_back(line);
+  }
+  if (lines.size() < 4) throw InvalidInput("regression case: expected 4 lines (A, B, operation, regular)");
+  RegressionCase c;
+  c.a = read_polygon_line(lines[0]);
+  c.b = read_polygon_line(lines[1]);
+  try {
+    c.op = parse_operation(lines[2]);
+  } catch (const std::invalid_argument& e) {
+    throw InvalidInput(std::string("regression case line 3: ") + e.what());
+  }
+  if (lines[3] != "regular" && lines[3] != "nonregular") {
+    throw InvalidInput("regression case line 4: expected 'regular' or 'nonregular'");
+  }
+  c.regular = lines[3] == "regular";
+  return c;
+}
+
+std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const std::string& dir,
+                                      const ArtefactOptions& options) {
+  // Exact kernels (and the reference itself): every failure, as a regression case.
+  // Inexact kernels: the smallest failures of each (kernel, generator), worst verdicts first.
+  std::vector<const ResultRow*> exact_failures;
+  std::map<std::pair<std::string, std::string>, std::vector<const ResultRow*>> inexact;
+  for (const auto& r : rows) {
+    if (r.verdict == Verdict::exact_match || r.verdict == Verdict::invalid_input) continue;
+    if (r.kernel == "reference" || is_exact_kernel(r.kernel)) exact_failures.push_back(&r);
+    else inexact[{r.kernel, r.generator}].push_back(&r);
+  }
+  std::vector<std::pair<Artefact::Kind, const ResultRow*>> todo;
+  // A failed consistency check of the exact reference while measuring an area error: a
+  // bug of the core, reproduced on double polygons where possible.
+  std::vector<const ResultRow*> inconsistencies;
+  std::set<std::uint64_t> inconsistent_cases;
+  for (const auto& r : rows) {
+    if (r.message.find("[reference inconsistency]") != std::string::npos && inconsistent_cases.insert(r.case_index).second) {
+      inconsistencies.push_back(&r);
+    }
+  }
+  for (const auto* r : exact_failures) {
+    todo.push_back({Artefact::Kind::regression_case, r});
+    todo.push_back({Artefact::Kind::picture, r});
+  }
+  for (auto& [key, list] : inexact) {
+    std::stable_sort(list.begin(), list.end(), [](const ResultRow* x, const ResultRow* y) {
+      if (severity(*x) != severity(*y)) return severity(*x) < severity(*y);
+      if (x->size != y->size) return x->size < y->size;
+      return x->case_index < y->case_index;
+    });
+    std::set<std::uint64_t> seen;  // one picture per case
+    for (const ResultRow* r : list) {
+      if (seen.size() >= options.pictures_per_group) break;
+      if (seen.insert(r->case_index).second) todo.push_back({Artefact::Kind::picture, r});
+    }
+  }
+  std::vector<Artefact> out;
+  std::set<std::string> used_names;
+  for (const auto& [kind, r] : todo) {
+    const CaseSpec spec = spec_of(*r);
+    Artefact art{kind, "", *r};
+    if (kind == Artefact::Kind::regression_case) {
+      std::string stem = r->generator + "_" + std::to_string(r->seed);
+      if (!used_names.insert(stem).second) stem += run_suffix(*r);
+      used_names.insert(stem);
+      art.path = "regression/" + stem + ".wkt";
+    } else {
+      art.path = "pictures/" + r->kernel + "/" + spec.stem() + run_suffix(*r) + ".svg";
+    }
+    const fs::path target = fs::path(dir) / art.path;
+    const bool ok = run_isolated(
+        [&] {
+          const Case c = make_case(spec);
+          const Operation op = parse_operation(r->op);
+          if (kind == Artefact::Kind::regression_case) {
+            write_file(target, regression_case_text(c.a, c.b, op, r->regular,
+                                                    {"generator=" + r->generator + " variant=" + r->variant +
+                                                         " params=" + r->params + " seed=" + std::to_string(r->seed),
+                                                     "kernel=" + r->kernel + " verdict=" +
+                                                         std::string(verdict_name(r->verdict)) + " " + r->message}));
+            return;
+          }
+          const ExactResult ref = exact_reference(c.a, c.b, op, r->regular, false);
+          std::optional<Output> kernel_out;
+          std::string title = r->kernel + ": " + std::string(verdict_name(r->verdict));
+          if (r->area_error) {
+            char buf[48];
+            std::snprintf(buf, sizeof buf, ", area error %.2g", *r->area_error);
+            title += buf;
+          }
+          const bool rerun = r->kernel != "reference" && r->verdict != Verdict::crash && r->verdict != Verdict::timeout;
+          if (rerun) {
+            try {
+              kernel_out = compute(c.a, c.b, BooleanOptions{op, r->regular, r->kernel}).output;
+            } catch (const std::exception& e) {
+              title += " (" + std::string(e.what()).substr(0, 80) + ")";
+            }
+          } else {
+            title += " (no output)";
+          }
+          const std::string exact_title = "A, B and the exact " + r->op + (r->regular ? "" : " (non-regular)") +
+                                          ": " + std::to_string(ref.cycles.size()) + " polygons";
+          write_file(target, failure_picture(c.a, c.b, ref.output, exact_title, kernel_out, title));
+        },
+        options.timeout_seconds);
+    if (ok && fs::exists(target)) out.push_back(std::move(art));
+  }
+  for (const ResultRow* r : inconsistencies) {
+    Artefact art{Artefact::Kind::regression_case, "regression/inconsistency_" + r->generator + "_" + std::to_string(r->seed) + ".wkt", *r};
+    const fs::path target = fs::path(dir) / art.path;
+    const bool ok = run_isolated(
+        [&] {
+          const Case c = make_case(spec_of(*r));
+          const Operation op = parse_operation(r->op);
+          const auto area_polygon = [](const Output& o) {
+            Polygon p;
+            for (const auto& cyc : o.irreducible) {
+              if (cyc.vertices.size() >= 3) p.rings.push_back(cyc.vertices);
+            }
+            return p;
+          };
+          const Polygon k = area_polygon(compute(c.a, c.b, BooleanOptions{op, r->regular, r->kernel}).output);
+          const Polygon e = area_polygon(exact_reference(c.a, c.b, op, r->regular, false).output);
+          for (const auto& [x, y] : {std::pair{&k, &k}, std::pair{&e, &e}, std::pair{&k, &e}}) {
+            if (const auto what = violated_identity(*x, *y)) {
+              const Operation show = x == y ? Operation::intersection : Operation::symmetric_difference;
+              write_file(target, regression_case_text(*x, *y, show, true,
+                                                      {"RationalKernel violates an exact identity: " + *what,
+                                                       "found measuring " + r->kernel + " on generator=" + r->generator +
+                                                           " variant=" + r->variant + " params=" + r->params +
+                                                           " seed=" + std::to_string(r->seed) + " op=" + r->op}));
+              return;
+            }
+          }
+          _exit(2);  // not reproduced on double polygons
+        },
+        options.timeout_seconds);
+    if (ok && fs::exists(target)) out.push_back(std::move(art));
+  }
+  std::ofstream list(fs::path(dir) / "artefacts.csv");
+  list << "kind,path," << csv_header() << "\n";
+  for (const auto& a : out) {
+    list << (a.kind == Artefact::Kind::picture ? "picture" : "regression_case") << "," << a.path << ","
+         << to_csv(a.row) << "\n";
+  }
+  return out;
+}
+
+std::vector<Artefact> read_artefacts(const std::string& dir) {
+  // artefacts.csv, or one per shard (artefacts-shard-i-of-N.csv) before a merge.
+  std::vector<fs::path> files;
+  if (fs::is_directory(dir)) {
+    for (const auto& e : fs::directory_iterator(dir)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind("artefacts", 0) == 0 && e.path().extension() == ".csv") files.push_back(e.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<Artefact> out;
+  for (const auto& f : files) {
+    std::ifstream in(f);
+    std::string line;
+    if (!std::getline(in, line)) continue;  // header
+    while (std::getline(in, line)) {
+      const auto c1 = line.find(',');
+      const auto c2 = line.find(',', c1 + 1);
+      if (c1 == std::string::npos || c2 == std::string::npos) continue;
+      Artefact a;
+      a.kind = line.substr(0, c1) == "picture" ? Artefact::Kind::picture : Artefact::Kind::regression_case;
+      a.path = line.substr(c1 + 1, c2 - c1 - 1);
+      a.row = parse_csv_row(line.substr(c2 + 1));
+      out.push_back(std::move(a));
+    }
+  }
+  return out;
+}
+
+}  // namespace mk::experiments

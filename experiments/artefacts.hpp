@@ -1,0 +1,62 @@
+// Failure artefacts of a sweep: every failure of an exact kernel as a ready regression case
+// file (tests/regression/cases/<generator>_<seed>.wkt format), and SVG pictures (A, B, the
+// exact result, the kernel's result) of the smallest failing cases of each kernel.
+// [MK89 §3.3] (exact kernels never fail: each failure is a bug to keep as a test)
+// Preconditions: rows come from run_sweep over the same generators; the out directory is
+// writable.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/output.hpp"
+#include "core/polygon.hpp"
+#include "experiments/case.hpp"
+#include "experiments/pictures.hpp"
+#include "experiments/results.hpp"
+
+namespace mk::experiments {
+
+// The regression case format, four lines and optional '#' comment lines:
+//   A as WKT (POLYGON / MULTIPOLYGON) when it is island-type with rings of 3+ points in
+//     shell-then-holes order, else as native JSON on one line
+//   B the same way
+//   the operation: intersection | union | difference | xor
+//   regular | nonregular
+std::string regression_case_text(const Polygon& a, const Polygon& b, Operation op, bool regular,
+                                 const std::vector<std::string>& comments);
+
+struct RegressionCase {
+  Polygon a;
+  Polygon b;
+  Operation op = Operation::intersection;
+  bool regular = true;
+};
+// Reads the format above (WKT or native JSON per line); throws mk::InvalidInput.
+RegressionCase read_regression_case(const std::string& text);
+
+
+struct Artefact {
+  enum class Kind { regression_case, picture } kind = Kind::picture;
+  std::string path;  // relative to the output directory
+  ResultRow row;     // the run it shows
+};
+
+struct ArtefactOptions {
+  std::size_t pictures_per_group = 3;  // per (kernel, generator), smallest cases first
+  double timeout_seconds = 60;         // per artefact, in a forked child
+};
+
+// Picks the failures, regenerates their cases and writes DIR/regression/*.wkt and
+// DIR/pictures/<kernel>/*.svg; returns what it wrote (also listed in DIR/artefacts.csv).
+std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const std::string& dir,
+                                      const ArtefactOptions& options);
+
+// Reads DIR/artefacts.csv back (for `report`); empty when absent.
+std::vector<Artefact> read_artefacts(const std::string& dir);
+
+Operation parse_operation(const std::string& name);  // throws std::invalid_argument
+
+}  // namespace mk::experiments

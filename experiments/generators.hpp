@@ -1,0 +1,63 @@
+// The experiment generators, one named function each, and the registry that plans a sweep
+// from them. Each name is also the name of the degeneracy it stresses (comments in core/
+// use the same words), and each failing case it produces becomes
+// tests/regression/cases/<generator>_<seed>.wkt.
+// [MK89 §2.2] (vertex-complete polygons) [MK89 Appendix A] (figures 6-12) [KMPSY08]
+// Preconditions: a spec's variant is one the generator lists; otherwise std::invalid_argument.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "experiments/case.hpp"
+
+namespace mk::experiments {
+
+// Degenerate configurations on the integer lattice (generators_degenerate.cpp).
+PolygonPair shared_vertex(const CaseSpec& spec);
+PolygonPair shared_edge(const CaseSpec& spec);
+PolygonPair collinear_overlap(const CaseSpec& spec);
+PolygonPair vertex_on_edge(const CaseSpec& spec);
+PolygonPair identical(const CaseSpec& spec);
+PolygonPair same_vertex_set(const CaseSpec& spec);
+PolygonPair hole_filled(const CaseSpec& spec);
+PolygonPair holes_collinear(const CaseSpec& spec);
+PolygonPair nested_touching(const CaseSpec& spec);
+PolygonPair collinear_vertices(const CaseSpec& spec);
+// Random polygons (generators_random.cpp).
+PolygonPair grid_random(const CaseSpec& spec);
+PolygonPair blob(const CaseSpec& spec);
+PolygonPair star(const CaseSpec& spec);
+// Near-degenerate doubles (generators_numeric.cpp).
+PolygonPair rotated(const CaseSpec& spec);
+PolygonPair ulp_perturbed(const CaseSpec& spec);
+PolygonPair kettner_grid(const CaseSpec& spec);
+// The paper's example figures (generators_paper.cpp).
+PolygonPair paper_figures(const CaseSpec& spec);
+
+enum class SweepLevel { quick, normal, full };
+
+struct Generator {
+  std::string_view name;
+  std::string_view stresses;  // one line for the report and --list
+  std::vector<std::string_view> variants;
+  PolygonPair (*make)(const CaseSpec&);
+};
+
+const std::vector<Generator>& generators();
+const Generator& find_generator(std::string_view name);  // throws std::invalid_argument
+
+// Generates a case from its spec.
+Case make_case(const CaseSpec& spec);
+
+struct PlanOptions {
+  SweepLevel level = SweepLevel::normal;
+  int seeds = 0;  // random instances per configuration; 0: the level's default
+  std::uint64_t base_seed = 1;
+  std::vector<std::string> generators;  // empty: all
+};
+
+// Every case of a sweep, in a fixed order (shards take every N-th).
+std::vector<CaseSpec> plan_sweep(const PlanOptions& options);
+
+}  // namespace mk::experiments

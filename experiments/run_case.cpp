@@ -1,0 +1,190 @@
+// The runs of one case: the exact reference per (op, regular), then every kernel through
+// the public API, each assessed against the reference. [MK89 §3.2] [MK89 §3.3]
+// Preconditions: see runner.hpp.
+#include <chrono>
+#include <exception>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <typeinfo>
+
+#include "api/mkbool.hpp"
+#include "experiments/generators.hpp"
+#include "experiments/runner.hpp"
+#include "experiments/verdict.hpp"
+
+#if __has_include("arithmetic/predicates_counters.hpp")
+#include "arithmetic/predicates_counters.hpp"
+#define MK_EXPERIMENTS_HAVE_COUNTERS 1
+#endif
+
+namespace mk::experiments {
+
+namespace {
+
+struct Counts {
+  std::optional<std::int64_t> calls;
+  std::optional<std::int64_t> fallbacks;
+};
+
+void reset_counters() {
+#ifdef MK_EXPERIMENTS_HAVE_COUNTERS
+  PredicateCounters::reset();
+#endif
+}
+
+// Predicate calls and how many left the first (filter) stage, where the build counts them
+// (CMake option MK_COUNTERS); empty otherwise.
+Counts read_counters() {
+  Counts c;
+#ifdef MK_EXPERIMENTS_HAVE_COUNTERS
+  const PredicateCounters p = PredicateCounters::read();
+  std::int64_t calls = 0, filter_failed = 0;
+  for (std::size_t m = 0; m < PredicateCounters::method_count; ++m) {
+    for (std::size_t k = 0; k < PredicateCounters::kind_count; ++k) {
+      const auto base = (m * PredicateCounters::kind_count + k) * PredicateCounters::stage_count;
+      calls += static_cast<std::int64_t>(p.reached[base]);
+      filter_failed += static_cast<std::int64_t>(p.reached[base + 1] + p.reached[base + 2]);
+    }
+  }
+  if (calls > 0) {
+    c.calls = calls;
+    c.fallbacks = filter_failed;
+  }
+#endif
+  return c;
+}
+
+std::string describe(const std::exception& e) {
+  if (dynamic_cast<const KernelFailure*>(&e)) return std::string("KernelFailure: ") + e.what();
+  if (dynamic_cast<const InvalidInput*>(&e)) return std::string("InvalidInput: ") + e.what();
+  return std::string("exception: ") + e.what();
+}
+
+// Everything assess() reads from an output, as bytes: equal fingerprints, equal verdicts.
+std::string fingerprint(const Output& o) {
+  std::string key;
+  const auto put = [&](const void* p, std::size_t n) { key.append(static_cast<const char*>(p), n); };
+  put(&o.unbounded, sizeof o.unbounded);
+  for (const auto& c : o.irreducible) {
+    const std::size_t n = c.vertices.size();
+    put(&c.type, sizeof c.type);
+    put(&n, sizeof n);
+    put(c.vertices.data(), n * sizeof(Point));
+    for (const auto& e : c.exact) key += e + ',';
+  }
+  return key;
+}
+
+ResultRow base_row(const IndexedCase& c, std::size_t size, Operation op, bool regular) {
+  ResultRow r;
+  r.case_index = c.index;
+  r.generator = c.spec.generator;
+  r.variant = c.spec.variant;
+  r.params = c.spec.params_text();
+  r.seed = c.spec.seed;
+  r.size = size;
+  r.op = std::string(operation_name(op));
+  r.regular = regular;
+  return r;
+}
+
+}  // namespace
+
+Shard parse_shard(const std::string& text) {
+  Shard s;
+  char slash = 0;
+  std::istringstream in(text);
+  if (!(in >> s.index >> slash >> s.count) || slash != '/' || s.count == 0 || s.index >= s.count || !in.eof()) {
+    throw std::invalid_argument("shard must be i/N with 0 <= i < N, got '" + text + "'");
+  }
+  return s;
+}
+
+std::vector<IndexedCase> select_shard(const std::vector<CaseSpec>& plan, Shard shard) {
+  std::vector<IndexedCase> out;
+  for (std::size_t i = shard.index; i < plan.size(); i += shard.count) out.push_back({i, plan[i]});
+  return out;
+}
+
+std::size_t slot_count(const RunOptions& o) { return o.ops.size() * o.regular.size() * (1 + o.kernels.size()); }
+
+void run_case(const IndexedCase& c, const RunOptions& o, std::size_t first_slot,
+              const std::function<void(std::size_t)>& on_start, const std::function<void(const ResultRow&)>& on_row,
+              const std::function<void(std::size_t)>& on_generated) {
+  const std::size_t per_group = 1 + o.kernels.size();
+  Case cs;
+  try {
+    cs = make_case(c.spec);
+  } catch (const std::exception& e) {
+    // A generator that cannot build its case: one row, no runs.
+    ResultRow r = base_row(c, 0, o.ops.front(), o.regular.front());
+    r.kernel = "reference";
+    r.verdict = Verdict::invalid_input;
+    r.message = "generator: " + std::string(e.what());
+    on_row(r);
+    return;
+  }
+  if (on_generated) on_generated(cs.size());
+  const bool paper_variants = cs.size() <= o.paper_reference_limit;
+  for (std::size_t g = first_slot / per_group; g < o.ops.size() * o.regular.size(); ++g) {
+    const Operation op = o.ops[g / o.regular.size()];
+    const bool regular = o.regular[g % o.regular.size()];
+    const std::size_t base = g * per_group;
+    const std::size_t first_kernel = first_slot > base ? first_slot - base - 1 : 0;
+    // The reference (recomputed when a run after it in this group crashed or timed out).
+    on_start(base);
+    ExactResult ref;
+    try {
+      ref = exact_reference(cs.a, cs.b, op, regular, paper_variants);
+    } catch (const std::exception& e) {
+      ResultRow r = base_row(c, cs.size(), op, regular);
+      r.kernel = "reference";
+      r.verdict = dynamic_cast<const InvalidInput*>(&e) ? Verdict::invalid_input : Verdict::error;
+      r.message = describe(e);
+      on_row(r);
+      continue;
+    }
+    std::map<std::string, Assessment> assessed;  // by output fingerprint, in this group
+    const std::optional<double> exact_area =
+        ref.unbounded ? std::nullopt : std::optional<double>(RationalKernel::to_nearest(ref.area));
+    for (std::size_t k = first_kernel; k < o.kernels.size(); ++k) {
+      on_start(base + 1 + k);
+      ResultRow r = base_row(c, cs.size(), op, regular);
+      r.kernel = o.kernels[k];
+      r.exact_area = exact_area;
+      if (o.fault_injection) o.fault_injection(o.kernels[k], c.spec);
+      try {
+        reset_counters();
+        BooleanOptions options{op, regular, o.kernels[k]};
+        options.area = false;  // the verdict measures areas against the reference itself
+        const BooleanOutput out = compute(cs.a, cs.b, options);
+        const Counts counts = read_counters();
+        r.predicate_calls = counts.calls;
+        r.predicate_fallbacks = counts.fallbacks;
+        r.op_ns = out.stats.op_ns;
+        r.vertices_in = static_cast<std::int64_t>(out.stats.vertices_in);
+        r.crossings = static_cast<std::int64_t>(out.stats.crossings);
+        r.vertices_out = static_cast<std::int64_t>(out.stats.vertices_out);
+        // Kernels that decide alike often output the same result: assess it once.
+        const std::string key = fingerprint(out.output);
+        auto cached = assessed.find(key);
+        if (cached == assessed.end()) cached = assessed.emplace(key, assess(out.output, ref)).first;
+        const Assessment& a = cached->second;
+        r.verdict = a.verdict;
+        r.symdiff_area = a.symdiff_area;
+        r.area_error = a.area_error;
+        r.message = a.note;
+      } catch (const std::exception& e) {
+        r.verdict = Verdict::error;
+        r.message = describe(e);
+      } catch (...) {
+        r.verdict = Verdict::error;
+        r.message = "unknown exception";
+      }
+      on_row(r);
+    }
+  }
+}
+
+}  // namespace mk::experiments

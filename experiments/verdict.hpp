@@ -1,0 +1,108 @@
+// The exact reference result and the verdict on one kernel's output against it:
+// exact_match, valid_different (with the exact area of the symmetric difference) or
+// invalid_output; error, timeout and crash come from the runner.
+// [MK89 §3.3] (numerical accuracy; non-orientable rounded output) [MK89 §3.1 step 6]
+// (irreducible result polygons and their types)
+// Preconditions: the reference comes from RationalKernel on the same A, B, op, regular.
+#pragma once
+
+#include <gmpxx.h>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "arithmetic/kernels/rational_kernel.hpp"
+#include "core/output.hpp"
+#include "core/polygon.hpp"
+
+namespace mk::experiments {
+
+enum class Verdict : unsigned char {
+  exact_match,      // the same irreducible polygons, types and vertices (rounded, or exact)
+  valid_different,  // a valid output, but not the exact result
+  invalid_output,   // rounded output not valid: crossing/overlapping edges, collapsed ring,
+                    // or a ring whose orientation contradicts its island/hole type
+  error,            // the kernel threw (mk::KernelFailure or any other exception)
+  timeout,          // the run exceeded the time limit and was killed
+  crash,            // the process running the case died (signal)
+  invalid_input,    // the reference rejected the input: a generator bug, not a kernel's
+};
+inline constexpr Verdict all_verdicts[] = {Verdict::exact_match, Verdict::valid_different, Verdict::invalid_output,
+                                           Verdict::error,       Verdict::timeout,         Verdict::crash,
+                                           Verdict::invalid_input};
+
+std::string_view verdict_name(Verdict v);
+std::optional<Verdict> parse_verdict(std::string_view name);
+
+struct ExactCycle {
+  PolygonType type = PolygonType::island;
+  std::vector<RationalPoint> vertices;
+};
+
+struct ExactResult {
+  std::vector<ExactCycle> cycles;
+  bool unbounded = false;
+  mpq_class area;  // islands minus holes over the area cycles; 0 when unbounded
+  Output output;   // the same result rounded, as kernels report it (pictures, comparison)
+};
+
+// RationalKernel on A op B. With `paper_variants` it uses the paper's sorted EF table and
+// all-pairs intersection search, so that the `rational` kernel run through the API (hash
+// table, sweep) is checked against a partly independent path.
+ExactResult exact_reference(const Polygon& a, const Polygon& b, Operation op, bool regular, bool paper_variants);
+
+struct Assessment {
+  Verdict verdict = Verdict::exact_match;
+  std::optional<double> symdiff_area;  // exact area of output XOR reference, rounded
+  std::optional<double> area_error;    // symdiff_area / |exact area|, or absolute if that is 0
+  std::string note;                    // the first difference found, or why output is invalid
+};
+
+// assess() measures area errors of outputs with at most this many result polygons
+// (kernel's and reference's together).
+inline constexpr std::size_t symdiff_polygon_limit = 2000;
+
+// Compares a kernel's output with the reference. When the output carries exact "p/q"
+// coordinates (exact kernels), those are compared; otherwise the rounded vertices are
+// compared with the reference's vertices rounded to nearest.
+Assessment assess(const Output& output, const ExactResult& reference);
+
+// The type of the reference's counterclockwise cycles: island, except where the result
+// region lies right of its cycles (hole-type inputs), where counterclockwise cycles are
+// holes. Island when the reference has no area cycle.
+PolygonType ccw_type_of(const ExactResult& reference);
+
+// Whether the rounded output is valid: is_valid_rounded_output (no crossing or overlapping
+// edges, no collapsed ring) and every area ring's exact orientation agrees with its type
+// (counterclockwise rings have type `ccw_type`). `why` receives the reason when not.
+bool is_valid_output(const Output& output, PolygonType ccw_type, std::string* why = nullptr);
+
+// Exact area of the symmetric difference of two results given as area cycles (rings of
+// 3+ vertices, nesting decides the region as in the paper's polygon model; unbounded
+// results are hole-type). `infinite` when exactly one of them is unbounded; empty when
+// RationalKernel rejects the rings (crossing edges).
+struct SymmetricDifference {
+  bool infinite = false;
+  mpq_class area;
+  // Whether area(X xor Y) = area(X) + area(Y) - 2 area(X and Y), with area(X), area(Y)
+  // from nesting parity computed without the core; empty when not checked (many rings).
+  std::optional<bool> consistent;
+};
+std::optional<SymmetricDifference> symmetric_difference_area(const std::vector<ExactCycle>& x, bool x_unbounded,
+                                                   const std::vector<ExactCycle>& y, bool y_unbounded);
+
+// The area of the finite area region of rings by nesting parity, computed without the
+// core; empty for more than 64 rings or rings whose edges all lie on another ring.
+std::optional<mpq_class> parity_area(const std::vector<std::vector<RationalPoint>>& rings);
+
+// Exact identities RationalKernel must satisfy on island polygons x, y of doubles:
+// area(x and x) = parity area of x, and area(x xor y) = area(x) + area(y) - 2 area(x and y).
+// Returns a description of the first one violated, or empty (also when not checkable).
+std::optional<std::string> violated_identity(const Polygon& x, const Polygon& y);
+
+// The output's cycles with exact coordinates (parsed "p/q" when present, else the doubles).
+std::vector<ExactCycle> exact_cycles(const Output& output);
+
+}  // namespace mk::experiments

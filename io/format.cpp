@@ -1,0 +1,98 @@
+// Format sniffing and dispatch to the readers (see format.hpp).
+// [OGC06-103 §7] [RFC7946] [MK89 §2.2]
+// Preconditions: none.
+#include "io/format.hpp"
+
+#include <string>
+
+#include "io/geojson.hpp"
+#include "io/native_json.hpp"
+#include "io/wkt.hpp"
+
+namespace mk {
+
+namespace {
+
+bool ends_with_ignoring_case(std::string_view s, std::string_view suffix) {
+  if (s.size() < suffix.size()) return false;
+  s = s.substr(s.size() - suffix.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    char c = s[i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != suffix[i]) return false;
+  }
+  return true;
+}
+
+bool is_json_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+std::string_view skip_leading_space(std::string_view text) {
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  while (!text.empty() && (is_json_space(text.front()) || text.front() == '\f' || text.front() == '\v')) {
+    text.remove_prefix(1);
+  }
+  return text;
+}
+
+// True when the top-level JSON object has a "rings" key. A small scanner (strings, escapes,
+// nesting depth) rather than a parse: it stops at the key and never builds a document.
+// Malformed JSON simply yields false; the GeoJSON reader then reports the syntax error.
+bool top_object_has_rings(std::string_view text) {
+  text = skip_leading_space(text);
+  if (text.empty() || text.front() != '{') return false;
+  int depth = 0;
+  bool expecting_key = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '"') {
+      const std::size_t start = i + 1;
+      for (++i; i < text.size() && text[i] != '"'; ++i) {
+        if (text[i] == '\\') ++i;
+      }
+      if (i >= text.size()) return false;
+      if (depth == 1 && expecting_key) {
+        if (text.substr(start, i - start) == "rings") return true;
+        expecting_key = false;
+      }
+    } else if (c == '{' || c == '[') {
+      ++depth;
+      expecting_key = depth == 1;
+    } else if (c == '}' || c == ']') {
+      if (--depth == 0) return false;
+    } else if (c == ',') {
+      expecting_key = depth == 1;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::string_view format_name(Format format) {
+  switch (format) {
+    case Format::wkt: return "WKT";
+    case Format::geojson: return "GeoJSON";
+    case Format::native_json: return "native JSON";
+  }
+  return "?";
+}
+
+Format sniff_format(std::string_view text, std::string_view filename_hint) {
+  if (ends_with_ignoring_case(filename_hint, ".wkt")) return Format::wkt;
+  if (ends_with_ignoring_case(filename_hint, ".geojson")) return Format::geojson;
+  const bool is_json = ends_with_ignoring_case(filename_hint, ".json") ||
+                       skip_leading_space(text).starts_with('{');
+  if (!is_json) return Format::wkt;
+  return top_object_has_rings(text) ? Format::native_json : Format::geojson;
+}
+
+Polygon read_polygon(std::string_view text, std::string_view filename_hint) {
+  switch (sniff_format(text, filename_hint)) {
+    case Format::wkt: return to_polygon(read_wkt(text));
+    case Format::geojson: return to_polygon(read_geojson(text));
+    case Format::native_json: return read_native_json(text);
+  }
+  return {};
+}
+
+}  // namespace mk

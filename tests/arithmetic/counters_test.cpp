@@ -1,0 +1,127 @@
+// Predicate counters: compiled in here (MK_PREDICATE_COUNTERS), per thread, with reset and
+// read; and the stage each kind of input is expected to reach. [Sh97 §4.2]
+#include "arithmetic/predicates_counters.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <thread>
+
+#include "arithmetic/adaptive.hpp"
+#include "arithmetic/interval_filter.hpp"
+#include "tests/arithmetic/test_support.hpp"
+
+namespace {
+
+using mk::PredicateCounters;
+using mk::PredicateKind;
+using mk::PredicateMethod;
+using mk::PredicateStage;
+
+constexpr auto adaptive = PredicateMethod::adaptive;
+constexpr auto interval = PredicateMethod::interval;
+constexpr auto orient2d = PredicateKind::orient2d;
+
+std::uint64_t reached(PredicateMethod m, PredicateStage s, PredicateKind k = orient2d) {
+  return PredicateCounters::read().reached_stage(m, k, s);
+}
+
+void print(const char* what) {
+  const auto c = PredicateCounters::read();
+  std::cout << what << ": adaptive calls " << c.calls(adaptive, orient2d) << " B "
+            << c.reached_stage(adaptive, orient2d, PredicateStage::expansion_b) << " C "
+            << c.reached_stage(adaptive, orient2d, PredicateStage::expansion_c) << " exact "
+            << c.reached_stage(adaptive, orient2d, PredicateStage::expansion_exact) << " gmp "
+            << c.reached_stage(adaptive, orient2d, PredicateStage::gmp) << "; interval calls "
+            << c.calls(interval, orient2d) << " interval "
+            << c.reached_stage(interval, orient2d, PredicateStage::interval) << " gmp "
+            << c.reached_stage(interval, orient2d, PredicateStage::gmp) << "\n";
+}
+
+TEST(arith_counters, compiled_in_reset_and_read) {
+  static_assert(PredicateCounters::enabled);
+  PredicateCounters::reset();
+  EXPECT_EQ(PredicateCounters::read().calls(adaptive, orient2d), 0u);
+  mk::adaptive::orient2d(0, 0, 1, 0, 0, 1);
+  mk::adaptive::orient_vectors(0, 0, 1, 0, 0, 0, 0, 1);
+  mk::interval_filter::orient2d(0, 0, 1, 0, 0, 1);
+  const auto c = PredicateCounters::read();
+  EXPECT_EQ(c.calls(adaptive, orient2d), 1u);
+  EXPECT_EQ(c.calls(adaptive, PredicateKind::orient_vectors), 1u);
+  EXPECT_EQ(c.calls(interval, orient2d), 1u);
+  EXPECT_EQ(c.reached_stage(adaptive, orient2d, PredicateStage::expansion_b), 0u);
+  PredicateCounters::reset();
+  EXPECT_EQ(PredicateCounters::read().calls(adaptive, orient2d), 0u);
+}
+
+TEST(arith_counters, counters_are_per_thread) {
+  PredicateCounters::reset();
+  std::uint64_t other = 0;
+  std::thread t([&] {
+    for (int i = 0; i < 5; ++i) mk::adaptive::orient2d(0, 0, 1, 0, 0, i + 1.0);
+    other = PredicateCounters::read().calls(adaptive, orient2d);
+  });
+  t.join();
+  EXPECT_EQ(other, 5u);
+  EXPECT_EQ(PredicateCounters::read().calls(adaptive, orient2d), 0u);
+}
+
+TEST(arith_counters, random_input_stops_at_the_filter) {
+  PredicateCounters::reset();
+  std::mt19937_64 rng(4001);
+  std::uniform_real_distribution<double> d(-1, 1);
+  for (int k = 0; k < 10000; ++k) {
+    const double v[6] = {d(rng), d(rng), d(rng), d(rng), d(rng), d(rng)};
+    mk::adaptive::orient2d(v[0], v[1], v[2], v[3], v[4], v[5]);
+    mk::interval_filter::orient2d(v[0], v[1], v[2], v[3], v[4], v[5]);
+  }
+  print("random");
+  EXPECT_EQ(reached(adaptive, PredicateStage::filter), 10000u);
+  EXPECT_LT(reached(adaptive, PredicateStage::expansion_b), 10u);
+  EXPECT_LT(reached(interval, PredicateStage::interval), 10u);
+}
+
+TEST(arith_counters, collinear_input_reaches_the_expected_stages) {
+  // Exact differences: stage B decides (all tails zero); every interval operation is exact
+  // too, and the enclosure [0, 0] proves the zero without GMP.
+  PredicateCounters::reset();
+  for (int k = 1; k <= 100; ++k) {
+    mk::adaptive::orient2d(0.25 * k, 0.75 * k, 3.0 * k, 9.0 * k, 7.0 * k, 21.0 * k);
+    mk::interval_filter::orient2d(0.25 * k, 0.75 * k, 3.0 * k, 9.0 * k, 7.0 * k, 21.0 * k);
+  }
+  print("collinear, exact differences");
+  EXPECT_EQ(reached(adaptive, PredicateStage::expansion_b), 100u);
+  EXPECT_EQ(reached(adaptive, PredicateStage::expansion_c), 0u);
+  EXPECT_EQ(reached(interval, PredicateStage::interval), 100u);
+  EXPECT_EQ(reached(interval, PredicateStage::gmp), 0u);
+
+  // Inexact differences (points of different binades on y = x/3): stages C and exact.
+  PredicateCounters::reset();
+  std::mt19937_64 rng(4002);
+  for (int k = 0; k < 1000; ++k) {
+    const double a = mk::test::random_short_double(rng, 45, -30, 30);
+    const double b = mk::test::random_short_double(rng, 45, -30, 30);
+    const double c = mk::test::random_short_double(rng, 45, -30, 30);
+    EXPECT_EQ(mk::adaptive::orient2d(3 * a, a, 3 * b, b, 3 * c, c), 0);
+    EXPECT_EQ(mk::interval_filter::orient2d(3 * a, a, 3 * b, b, 3 * c, c), 0);
+  }
+  print("collinear, inexact differences");
+  EXPECT_GT(reached(adaptive, PredicateStage::expansion_c), 0u);
+  EXPECT_GT(reached(adaptive, PredicateStage::expansion_exact), 0u);
+  EXPECT_EQ(reached(adaptive, PredicateStage::gmp), 0u);
+  EXPECT_GT(reached(interval, PredicateStage::gmp), 0u);
+
+  // Magnitudes too far apart for expansions: GMP.
+  PredicateCounters::reset();
+  EXPECT_EQ(mk::adaptive::orient2d(1e-300, 1e-300, 1e300, 1e300, -1e300, -1e300), 0);
+  EXPECT_EQ(reached(adaptive, PredicateStage::gmp), 1u);
+  // Huge but within 2^899 of each other: scaled into range, no GMP.
+  PredicateCounters::reset();
+  EXPECT_EQ(mk::adaptive::orient2d(1e300, 1e300, 1.5e300, 1.5e300, 1.7e308, 1.7e308), 0);
+  EXPECT_EQ(reached(adaptive, PredicateStage::gmp), 0u);
+  EXPECT_EQ(reached(adaptive, PredicateStage::expansion_b), 1u);
+}
+
+}  // namespace

@@ -1,0 +1,165 @@
+// Batch mode of the command (issue 3): one output line per input line, in order, with exact
+// areas for exact kernels; a bad line gives an error line and never stops the batch.
+// [MK89 §2.3] (operations; symmetric difference added) [MK89 §3.3] (rounded validity)
+// Preconditions: the built mkbool (MK_CLI_EXE) and the library (for kernel_names()).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "api/mkbool.hpp"
+#include "tests/cli/cli_support.hpp"
+
+namespace mk::test {
+namespace {
+
+using Json = nlohmann::ordered_json;  // keeps the order of the keys as written
+
+std::string case_line(const Json& id, const std::string& op, const std::string& a, const std::string& b) {
+  return Json{{"id", id}, {"op", op}, {"a_wkt", a}, {"b_wkt", b}}.dump() + "\n";
+}
+
+const std::string square_a = "POLYGON((0 0,2 0,2 2,0 2,0 0))";
+const std::string square_b = "POLYGON((1 1,3 1,3 3,1 3,1 1))";
+
+std::vector<Json> parse_lines(const std::string& text) {
+  std::vector<Json> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(Json::parse(line));
+  return lines;
+}
+
+TEST(cliBatch, BadLineInTheMiddleDoesNotStopTheBatch) {
+  const std::string input = case_line(1, "intersection", square_a, square_b) + "{\"id\": 2, \"op\": \"union\",\n" +
+                            case_line("three", "union", square_a, square_b);
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 3u) << r.out;
+  EXPECT_EQ(lines[0]["id"], 1);
+  EXPECT_FALSE(lines[0].contains("error"));
+  EXPECT_EQ(lines[0]["result_wkt"], "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))");
+  EXPECT_TRUE(lines[1]["id"].is_null());
+  EXPECT_EQ(lines[1]["line"], 2);
+  EXPECT_NE(lines[1]["error"].get<std::string>().find("malformed JSON"), std::string::npos) << lines[1];
+  EXPECT_TRUE(lines[1]["result_wkt"].is_null());
+  EXPECT_EQ(lines[2]["id"], "three");
+  EXPECT_EQ(lines[2]["area"], 7.0);
+}
+
+TEST(cliBatch, EveryFailingCaseGivesItsOwnErrorLine) {
+  const std::string input = case_line(1, "nope", square_a, square_b) +                                //
+                            case_line(2, "union", "POLYGON((0 0,1 0,0 1,1 1,0 0))", square_b) +          //
+                            case_line(3, "union", "POLYGON((0 0,2 0,2 2,0 2))", square_b) +              //
+                            "[1, 2]\n" +                                                                //
+                            "{\"id\": 5, \"op\": \"union\", \"b_wkt\": \"POLYGON EMPTY\"}\n" +          //
+                            "{\"id\": 6, \"op\": \"union\", \"a_wkt\": 7, \"b_wkt\": \"POLYGON EMPTY\"}\n" +  //
+                            case_line(7, "union", square_a, square_b);
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 7u) << r.out;
+  const char* expected[] = {"unknown op 'nope'",       "crosses",    "a_wkt: WKT line 1, column 22",
+                            "must be a JSON object", "missing \"a_wkt\"", "\"a_wkt\" is not a string"};
+  for (std::size_t i = 0; i < 6; ++i) {
+    ASSERT_TRUE(lines[i].contains("error")) << lines[i];
+    EXPECT_NE(lines[i]["error"].get<std::string>().find(expected[i]), std::string::npos) << lines[i];
+    EXPECT_EQ(lines[i]["line"], i + 1);
+  }
+  EXPECT_FALSE(lines[6].contains("error"));
+  EXPECT_EQ(lines[6]["id"], 7);
+}
+
+TEST(cliBatch, SymdifferenceIsAnAliasOfXor) {
+  const std::string input = case_line(1, "symdifference", square_a, square_b) + case_line(2, "xor", square_a, square_b);
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0]["op"], "symdifference");
+  EXPECT_EQ(lines[0]["result_wkt"], lines[1]["result_wkt"]);
+  EXPECT_EQ(lines[0]["area_exact"], "6");
+  EXPECT_EQ(
+      lines[0]["result_wkt"],
+      "MULTIPOLYGON (((0 0, 2 0, 2 1, 1 1, 1 2, 0 2, 0 0)), ((2 2, 2 1, 3 1, 3 3, 1 3, 1 2, 2 2)))");
+}
+
+TEST(cliBatch, OutputLinesHaveTheDocumentedFieldsAndExactAreas) {
+  // Two triangles whose intersection has the crossings (3/4, 3/4) and (1, 2/3): area 11/24.
+  const std::string input =
+      case_line("t", "intersection", "POLYGON((0 0,3 0,0 1,0 0))", "POLYGON((0 0,1 0,1 1,0 0))") +
+      "{\"id\": [1, \"x\"], \"op\": \"difference\", \"a_wkt\": \"POLYGON((0 0,1 0,1 1,0 1,0 0))\", \"b_wkt\": "
+      "\"POLYGON((0 0,1 0,1 1,0 0))\", \"note\": \"ignored\"}\n";
+  for (const std::string_view kernel : kernel_names()) {
+    const ProcessResult r = run_mkbool({"batch", "-", "--kernel", std::string(kernel)}, input);
+    ASSERT_EQ(r.exit_code, 0) << describe(r);
+    const auto lines = parse_lines(r.out);
+    ASSERT_EQ(lines.size(), 2u) << r.out;
+    for (const auto& line : lines) {
+      std::vector<std::string> keys;
+      for (const auto& item : line.items()) keys.push_back(item.key());
+      EXPECT_EQ(keys, (std::vector<std::string>{"id", "op", "kernel", "result_wkt", "area", "area_exact", "valid",
+                                                "op_ns", "line"}))
+          << line;
+      EXPECT_EQ(line["kernel"], std::string(kernel));
+      if (is_exact_kernel(kernel)) {
+        EXPECT_EQ(line["valid"], true);
+      } else {
+        EXPECT_TRUE(line["valid"].is_boolean()) << line;
+      }
+      EXPECT_TRUE(line["op_ns"].is_number_integer());
+    }
+    EXPECT_EQ(lines[0]["id"], "t");
+    EXPECT_EQ(lines[1]["id"], Json::parse(R"([1, "x"])"));
+    if (is_exact_kernel(kernel)) {
+      EXPECT_EQ(lines[0]["area_exact"], "11/24");
+      EXPECT_EQ(lines[0]["area"], 11.0 / 24.0);  // the nearest double
+      EXPECT_EQ(lines[1]["area_exact"], "1/2");
+      EXPECT_EQ(lines[1]["area"], 0.5);
+    } else {
+      // Rounded kernels: recorded, not asserted beyond their shape (STYLE.md).
+      EXPECT_TRUE(lines[0]["area_exact"].is_null());
+      EXPECT_TRUE(lines[0]["area"].is_number());
+    }
+  }
+}
+
+TEST(cliBatch, NonRegularAndBlankLines) {
+  const std::string input =
+      std::string("\n") + case_line(1, "intersection", square_a, "POLYGON((2 0,4 0,4 2,2 2,2 0))") + "\r\n";
+  const ProcessResult r = run_mkbool({"batch", "-", "--non-regular"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 1u) << r.out;
+  EXPECT_EQ(lines[0]["line"], 2);
+  EXPECT_EQ(lines[0]["result_wkt"], "GEOMETRYCOLLECTION (LINESTRING (2 0, 2 2))");
+  EXPECT_EQ(lines[0]["area_exact"], "0");
+}
+
+TEST(cliBatch, FileInputAndAtomicOutput) {
+  TempDir dir;
+  const std::string in = dir.write("cases.jsonl", case_line(1, "union", square_a, square_b));
+  const std::string out = dir.file("results.jsonl");
+  const ProcessResult r = run_mkbool({"batch", in, "-o", out});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(parse_lines(read_text(out)).at(0)["area_exact"], "7");
+  const ProcessResult missing = run_mkbool({"batch", dir.file("none.jsonl"), "-o", dir.file("x.jsonl")});
+  EXPECT_EQ(missing.exit_code, 3) << describe(missing);
+  EXPECT_NE(missing.err.find("cannot open"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.jsonl")));
+  const ProcessResult directory = run_mkbool({"batch", dir.path().string()});
+  EXPECT_EQ(directory.exit_code, 3) << describe(directory);
+  EXPECT_NE(directory.err.find("is a directory"), std::string::npos);
+}
+
+TEST(cliBatch, EmptyBatchWritesNothing) {
+  const ProcessResult r = run_mkbool({"batch", "-"}, "");
+  EXPECT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_EQ(r.out, "");
+}
+
+}  // namespace
+}  // namespace mk::test

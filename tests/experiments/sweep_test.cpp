@@ -1,0 +1,185 @@
+// Tests of the sweep: a tiny sweep through the library and through the mkbool-experiment
+// binary (CSV with the documented columns, the report, exact kernels only exact_match),
+// and the worker pool's survival of a crashing and a hanging run. [MK89 §3.3]
+// Preconditions: MK_EXPERIMENT_BIN names the built mkbool-experiment; a writable temp directory.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "api/mkbool.hpp"
+#include "experiments/artefacts.hpp"
+#include "experiments/generators.hpp"
+#include "experiments/report.hpp"
+#include "experiments/runner.hpp"
+
+namespace mk::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> all_kernels() {
+  std::vector<std::string> out;
+  for (const auto k : kernel_names()) out.emplace_back(k);
+  return out;
+}
+
+void expect_exact_kernels_match(const std::vector<ResultRow>& rows) {
+  for (const auto& r : rows) {
+    if (r.kernel == "reference" || is_exact_kernel(r.kernel)) {
+      EXPECT_EQ(r.verdict, Verdict::exact_match) << to_csv(r);
+    }
+  }
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("mkbool_experiments_test_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+TEST(Sweep, TinySweepInProcess) {
+  const auto plan = plan_sweep({SweepLevel::quick, 1, 5, {"shared_edge", "ulp_perturbed", "paper_figures"}});
+  RunOptions o;
+  o.kernels = all_kernels();
+  o.isolate = false;
+  SweepStats stats;
+  const auto rows = run_sweep(select_shard(plan, {}), o, "", &stats);
+  EXPECT_EQ(rows.size(), plan.size() * 8 * o.kernels.size());
+  expect_exact_kernels_match(rows);
+  for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_LE(rows[i - 1].case_index, rows[i].case_index);
+}
+
+TEST(Sweep, ACrashAndAHangCostOneRunEach) {
+  const auto plan = plan_sweep({SweepLevel::quick, 1, 1, {"shared_edge"}});
+  ASSERT_GE(plan.size(), 2u);
+  RunOptions o;
+  o.kernels = all_kernels();
+  o.ops = {Operation::intersection};
+  o.regular = {true};
+  o.jobs = 2;
+  o.timeout_seconds = 1;
+  const std::string victim = o.kernels.back();
+  o.fault_injection = [&](const std::string& kernel, const CaseSpec& spec) {
+    if (kernel != victim) return;
+    if (spec.seed == plan[0].seed) std::abort();  // a failed assertion, say
+    if (spec.seed == plan[1].seed) std::this_thread::sleep_for(std::chrono::seconds(30));
+  };
+  const auto rows = run_sweep(select_shard(plan, {}), o, "");
+  ASSERT_EQ(rows.size(), plan.size() * o.kernels.size());  // every run has its row
+  for (const auto& r : rows) {
+    if (r.kernel != victim || r.case_index > 1) {
+      if (is_exact_kernel(r.kernel)) {
+        EXPECT_EQ(r.verdict, Verdict::exact_match) << to_csv(r);
+      }
+      continue;
+    }
+    EXPECT_EQ(r.verdict, r.case_index == 0 ? Verdict::crash : Verdict::timeout) << to_csv(r);
+    EXPECT_EQ(r.seed, plan[r.case_index].seed);
+    EXPECT_GT(r.size, 0u);
+  }
+}
+
+TEST(Sweep, ExactKernelFailuresBecomeRegressionCasesAndPictures) {
+  // A made-up failure of the rational kernel and a real-looking one of double.
+  const CaseSpec spec{"vertex_on_edge", "crossing", {}, 42};
+  ResultRow r;
+  r.case_index = 3;
+  r.generator = spec.generator;
+  r.variant = spec.variant;
+  r.seed = spec.seed;
+  r.size = make_case(spec).size();
+  r.op = "union";
+  r.regular = false;
+  r.kernel = "rational";
+  r.verdict = Verdict::valid_different;
+  ResultRow d = r;
+  d.kernel = "double";
+  d.verdict = Verdict::invalid_output;
+  const fs::path dir = fresh_dir("artefacts");
+  const auto arts = write_artefacts({r, d}, dir.string(), {});
+  const fs::path wkt = dir / "regression" / "vertex_on_edge_42.wkt";
+  ASSERT_TRUE(fs::exists(wkt));
+  std::ifstream in(wkt);
+  const RegressionCase c = read_regression_case(std::string((std::istreambuf_iterator<char>(in)), {}));
+  const Case original = make_case(spec);
+  EXPECT_EQ(c.op, Operation::union_);
+  EXPECT_FALSE(c.regular);
+  EXPECT_EQ(c.a.rings.size(), original.a.rings.size());
+  EXPECT_EQ(c.b.rings.size(), original.b.rings.size());
+  std::size_t pictures = 0;
+  for (const auto& a : arts) {
+    if (a.kind == Artefact::Kind::picture) {
+      ++pictures;
+      EXPECT_TRUE(fs::exists(dir / a.path)) << a.path;
+    }
+  }
+  EXPECT_EQ(pictures, 2u);  // the rational failure and the double one
+  EXPECT_EQ(read_artefacts(dir.string()).size(), arts.size());
+  fs::remove_all(dir);
+}
+
+int run(const std::string& args) {
+  const std::string cmd = std::string(MK_EXPERIMENT_BIN) + " " + args + " > /dev/null 2>&1";
+  return std::system(cmd.c_str());
+}
+
+TEST(Sweep, BinaryWritesTheCsvAndTheReport) {
+  const fs::path dir = fresh_dir("binary");
+  ASSERT_EQ(run("run --quick --seeds 1 --generators shared_edge,ulp_perturbed,kettner_grid -o " + dir.string()), 0);
+  std::ifstream csv(dir / "results.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, csv_header());
+  const auto rows = read_results_dir(dir.string());
+  EXPECT_FALSE(rows.empty());
+  std::set<std::string> kernels;
+  for (const auto& r : rows) kernels.insert(r.kernel);
+  for (const auto k : kernel_names()) EXPECT_TRUE(kernels.count(std::string(k))) << "kernel " << k << " missing";
+  expect_exact_kernels_match(rows);
+  ASSERT_TRUE(fs::exists(dir / "README.md"));
+  std::ifstream md(dir / "README.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), {});
+  EXPECT_NE(text.find("## Verdicts per kernel"), std::string::npos);
+  EXPECT_NE(text.find("## Time relative to `double`"), std::string::npos);
+  if (fs::exists("/usr/bin/python3") && std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") == 0) {
+    EXPECT_TRUE(fs::exists(dir / "plots" / "failure_vs_ulps.png"));
+    EXPECT_NE(text.find("plots/failure_vs_ulps.png"), std::string::npos);
+  }
+  // The report regenerates from the CSV alone.
+  fs::remove(dir / "README.md");
+  ASSERT_EQ(run("report --no-plots " + dir.string()), 0);
+  EXPECT_TRUE(fs::exists(dir / "README.md"));
+  fs::remove_all(dir);
+}
+
+TEST(Sweep, ShardsMergeIntoTheWholeSweep) {
+  const fs::path dir = fresh_dir("shards");
+  const std::string common = "run --quick --seeds 1 --generators shared_vertex,identical --no-artefacts -o ";
+  const fs::path whole = dir / "whole", parts = dir / "parts";
+  ASSERT_EQ(run(common + whole.string() + " --no-plots"), 0);
+  ASSERT_EQ(run(common + parts.string() + " --shard 0/2"), 0);
+  ASSERT_EQ(run(common + parts.string() + " --shard 1/2"), 0);
+  ASSERT_EQ(run("merge --no-plots " + parts.string()), 0);
+  const auto a = read_results_dir(whole.string());
+  const auto b = read_results_dir(parts.string());
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].case_index, b[i].case_index);
+    EXPECT_EQ(a[i].seed, b[i].seed);
+    EXPECT_EQ(a[i].kernel, b[i].kernel);
+    EXPECT_EQ(a[i].verdict, b[i].verdict);
+  }
+  EXPECT_TRUE(fs::exists(parts / "README.md"));
+  EXPECT_NE(run("run --shard 2/2 -o " + dir.string()), 0);  // bad arguments fail
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mk::experiments

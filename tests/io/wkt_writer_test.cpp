@@ -1,0 +1,121 @@
+// Tests of the WKT writer: forms, ring direction, closing, shortest round-trip numbers,
+// non-regular parts, and the unbounded error. [OGC06-103 §7] [OGC06-103 §6.1.11]
+// Preconditions: none.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "io/wkt.hpp"
+#include "test_util.hpp"
+
+namespace mk {
+namespace {
+
+using test::rejects;
+
+OgcPolygon square_with_hole() {
+  // Shell clockwise and hole counterclockwise: the writer must turn both around.
+  return OgcPolygon{{{0, 0}, {0, 4}, {4, 4}, {4, 0}}, {{{1, 1}, {2, 1}, {2, 2}, {1, 2}}}};
+}
+
+TEST(ioWktWriter, EmptyIsPolygonEmpty) {
+  EXPECT_EQ(write_wkt(MultiPolygon{}), "POLYGON EMPTY");
+  EXPECT_EQ(write_wkt(Output{}), "POLYGON EMPTY");
+}
+
+TEST(ioWktWriter, ShellsCounterclockwiseHolesClockwiseRingsClosed) {
+  EXPECT_EQ(write_wkt(MultiPolygon{square_with_hole()}),
+            "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1))");
+}
+
+TEST(ioWktWriter, SeveralPolygonsAreMultiPolygon) {
+  const MultiPolygon mp{OgcPolygon{{{0, 0}, {1, 0}, {0, 1}}, {}},
+                        OgcPolygon{{{5, 5}, {6, 5}, {5, 6}}, {}}};
+  EXPECT_EQ(write_wkt(mp), "MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0)), ((5 5, 6 5, 5 6, 5 5)))");
+}
+
+TEST(ioWktWriter, ZeroAreaRingIsWrittenAsGiven) {
+  const MultiPolygon mp{OgcPolygon{{{0, 0}, {2, 0}, {1, 0}}, {}}};
+  EXPECT_EQ(write_wkt(mp), "POLYGON ((0 0, 2 0, 1 0, 0 0))");
+}
+
+TEST(ioWktWriter, OrientationIsExactForNeedleThinRings) {
+  // The middle vertex is one ulp above the chord: a counterclockwise sliver whose
+  // double-precision area is easy to get wrong; it must be written unchanged.
+  const double up = std::nextafter(0.5, 1.0);
+  const MultiPolygon ccw{OgcPolygon{{{0, 0}, {1, 1}, {0.5, up}}, {}}};
+  EXPECT_EQ(read_wkt(write_wkt(ccw))[0].shell, ccw[0].shell);
+  const MultiPolygon cw{OgcPolygon{{{0, 0}, {0.5, up}, {1, 1}}, {}}};
+  EXPECT_EQ(read_wkt(write_wkt(cw))[0].shell, ccw[0].shell);
+}
+
+TEST(ioWktWriter, RoundTripKeepsEveryBit) {
+  const double values[] = {0.1,
+                           1.0 / 3.0,
+                           -2.5e-310,
+                           std::numeric_limits<double>::denorm_min(),
+                           std::numeric_limits<double>::max(),
+                           -std::numeric_limits<double>::max(),
+                           123456789.123456789,
+                           std::nextafter(1.0, 2.0)};
+  Ring shell;
+  double x = 0;
+  for (double v : values) shell.push_back({x++, v});
+  const MultiPolygon mp{OgcPolygon{shell, {}}};
+  const std::string text = write_wkt(mp);
+  const MultiPolygon back = read_wkt(text);
+  ASSERT_EQ(back.size(), 1u) << text;
+  // The ring may have been reversed; compare as sets of points in either direction.
+  const Ring& r = back[0].shell;
+  ASSERT_EQ(r.size(), shell.size());
+  const bool same = r == shell;
+  Ring reversed{shell.front()};
+  for (std::size_t i = shell.size() - 1; i > 0; --i) reversed.push_back(shell[i]);
+  EXPECT_TRUE(same || r == reversed) << text;
+  EXPECT_NE(text.find("0.1,"), std::string::npos) << "0.1 is not written in shortest form: " << text;
+}
+
+TEST(ioWktWriter, WriteThenReadIsIdentityForNormalisedPolygons) {
+  const MultiPolygon mp{OgcPolygon{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{1, 1}, {1, 2}, {2, 2}, {2, 1}}}},
+                        OgcPolygon{{{10, 0}, {12, 0}, {11, 0.5}}, {}}};
+  const MultiPolygon back = read_wkt(write_wkt(mp));
+  ASSERT_EQ(back.size(), mp.size());
+  for (std::size_t i = 0; i < mp.size(); ++i) {
+    EXPECT_EQ(back[i].shell, mp[i].shell);
+    EXPECT_EQ(back[i].holes, mp[i].holes);
+  }
+}
+
+TEST(ioWktWriter, DanglingEdgesAndIsolatedPointsMakeACollection) {
+  Output out;
+  out.polygons = {OgcPolygon{{{0, 0}, {1, 0}, {0, 1}}, {}}};
+  out.dangling_edges = {{{1, 0}, {2, 0}}};
+  out.isolated_points = {{5, 5}};
+  EXPECT_EQ(write_wkt(out),
+            "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 0 1, 0 0)), LINESTRING (1 0, 2 0), "
+            "POINT (5 5))");
+  out.polygons.push_back(OgcPolygon{{{7, 7}, {8, 7}, {7, 8}}, {}});
+  EXPECT_EQ(write_wkt(out).rfind("GEOMETRYCOLLECTION (MULTIPOLYGON (((0 0", 0), 0u);
+}
+
+TEST(ioWktWriter, OnlyNonRegularParts) {
+  Output out;
+  out.dangling_edges = {{{0, 0}, {1, 1}}};
+  EXPECT_EQ(write_wkt(out), "GEOMETRYCOLLECTION (LINESTRING (0 0, 1 1))");
+  out.dangling_edges.clear();
+  out.isolated_points = {{-0.5, 2}};
+  EXPECT_EQ(write_wkt(out), "GEOMETRYCOLLECTION (POINT (-0.5 2))");
+}
+
+TEST(ioWktWriter, UnboundedResultIsAnError) {
+  Output out;
+  out.unbounded = true;
+  EXPECT_TRUE(rejects([&] { write_wkt(out); },
+                      "the result is unbounded (hole type) and cannot be written as WKT; use "
+                      "--format json"));
+}
+
+}  // namespace
+}  // namespace mk
