@@ -16,9 +16,14 @@ namespace mk {
 template <Kernel K>
 class WindingLocator {
  public:
-  // Edges as (src, dst) point ids.
-  WindingLocator(const Arrangement<K>& arr, std::vector<std::pair<int, int>> edges)
+  // Edges as (src, dst) point ids. `queries` is how many queries are expected: when they
+  // are few, each scans the edges directly (as cheap as indexing them once).
+  WindingLocator(const Arrangement<K>& arr, std::vector<std::pair<int, int>> edges, std::size_t queries)
       : arr_(arr), edges_(std::move(edges)) {
+    if (queries <= kDirectScanQueries) {
+      direct_ = true;
+      return;
+    }
     const int ranks = arr.x_rank.empty() ? 1 : arr.x_rank.back() + 1;
     buckets_ = std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(ranks), edges_.size() / 2 + 1));
     ranks_ = ranks;
@@ -38,35 +43,40 @@ class WindingLocator {
 
   // Winding number at the point just `side` of v -> t near v (see vertical_ray_crossing).
   int winding(int v, int t, Side side) const {
-    const int r = arr_.x_rank[v];
-    const std::size_t k = bucket(r);
     int wind = 0;
-    for (std::size_t i = begin_[k]; i < begin_[k + 1]; ++i) {
-      const auto [a, b] = edges_[items_[i]];
-      const int ra = arr_.x_rank[a];
-      const int rb = arr_.x_rank[b];
-      if (r < std::min(ra, rb) || r > std::max(ra, rb)) continue;
-      wind += vertical_ray_crossing<K>(arr_.points[v], arr_.points[t], side, arr_.points[a], arr_.points[b]);
-    }
+    for_each_crossing(v, t, side, [&](int c) { wind += c; });
     return wind;
   }
 
   // Number of edges crossing the ray (their parity counts the cycles around the point).
   int crossings(int v, int t, Side side) const {
-    const int r = arr_.x_rank[v];
-    const std::size_t k = bucket(r);
     int count = 0;
-    for (std::size_t i = begin_[k]; i < begin_[k + 1]; ++i) {
-      const auto [a, b] = edges_[items_[i]];
-      const int ra = arr_.x_rank[a];
-      const int rb = arr_.x_rank[b];
-      if (r < std::min(ra, rb) || r > std::max(ra, rb)) continue;
-      count += vertical_ray_crossing<K>(arr_.points[v], arr_.points[t], side, arr_.points[a], arr_.points[b]) != 0;
-    }
+    for_each_crossing(v, t, side, [&](int c) { count += c != 0; });
     return count;
   }
 
  private:
+  static constexpr std::size_t kDirectScanQueries = 4;
+
+  // Calls f(vertical_ray_crossing(...)) for every edge whose x-range contains v's x.
+  template <class F>
+  void for_each_crossing(int v, int t, Side side, F&& f) const {
+    const int r = arr_.x_rank[v];
+    const auto visit = [&](int e) {
+      const auto [a, b] = edges_[static_cast<std::size_t>(e)];
+      const int ra = arr_.x_rank[a];
+      const int rb = arr_.x_rank[b];
+      if (r < std::min(ra, rb) || r > std::max(ra, rb)) return;
+      f(vertical_ray_crossing<K>(arr_.points[v], arr_.points[t], side, arr_.points[a], arr_.points[b]));
+    };
+    if (direct_) {
+      for (int e = 0; e < static_cast<int>(edges_.size()); ++e) visit(e);
+      return;
+    }
+    const std::size_t k = bucket(r);
+    for (std::size_t i = begin_[k]; i < begin_[k + 1]; ++i) visit(items_[i]);
+  }
+
   std::size_t bucket(int rank) const {
     return static_cast<std::size_t>(static_cast<long long>(rank) * static_cast<long long>(buckets_) / ranks_);
   }
@@ -78,6 +88,7 @@ class WindingLocator {
 
   const Arrangement<K>& arr_;
   std::vector<std::pair<int, int>> edges_;
+  bool direct_ = false;
   std::size_t buckets_ = 1;
   int ranks_ = 1;
   std::vector<std::size_t> begin_;

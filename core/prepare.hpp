@@ -72,8 +72,12 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
     int ring;
     int k;
   };
+  std::size_t num_edges = 0;
+  for (const auto& ring : rings) num_edges += ring.ids.size() < 2 ? 0 : ring.ids.size();
   std::vector<SweepItem> items;
   std::vector<EdgeRef> refs;
+  items.reserve(num_edges);
+  refs.reserve(num_edges);
   for (int r = 0; r < static_cast<int>(rings.size()); ++r) {
     const auto& ids = rings[r].ids;
     if (ids.size() < 2) continue;
@@ -84,7 +88,9 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
       refs.push_back({r, static_cast<int>(k)});
     }
   }
-  std::vector<std::vector<int>> inserted(items.size());
+  // Points of the polygon inserted into its own edges, as (edge index, point id): rare, so
+  // kept flat and grouped by edge afterwards.
+  std::vector<std::pair<int, int>> inserted;
   for_each_candidate_pair<K>(pts, x_rank, items, false, search, [&](int i, int j) {
     const SweepItem& a = items[i];
     const SweepItem& b = items[j];
@@ -97,21 +103,32 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
                          edge_name(poly_name, rings[eb.ring], eb.ring, eb.k) +
                          ": the polygon is not orientable and cannot be made vertex-complete");
     }
-    if (rel.c_inside_ab) inserted[i].push_back(b.lo);
-    if (rel.d_inside_ab) inserted[i].push_back(b.hi);
-    if (rel.a_inside_cd) inserted[j].push_back(a.lo);
-    if (rel.b_inside_cd) inserted[j].push_back(a.hi);
+    if (rel.c_inside_ab) inserted.emplace_back(i, b.lo);
+    if (rel.d_inside_ab) inserted.emplace_back(i, b.hi);
+    if (rel.a_inside_cd) inserted.emplace_back(j, a.lo);
+    if (rel.b_inside_cd) inserted.emplace_back(j, a.hi);
   });
+  if (inserted.empty()) return;
+  std::sort(inserted.begin(), inserted.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::size_t next = 0;  // first entry of `inserted` not yet placed
   std::size_t e = 0;
   for (auto& ring : rings) {
     if (ring.ids.size() < 2) continue;
+    const std::size_t ring_end = e + ring.ids.size();
+    if (next == inserted.size() || static_cast<std::size_t>(inserted[next].first) >= ring_end) {
+      e = ring_end;  // nothing inserted into this ring
+      continue;
+    }
     IdRing out;
     for (std::size_t k = 0; k < ring.ids.size(); ++k, ++e) {
       const int u = ring.ids[k];
       const int w = ring.ids[(k + 1) % ring.ids.size()];
       out.ids.push_back(u);
       out.input_index.push_back(ring.input_index[k]);
-      auto& ins = inserted[e];
+      std::vector<int> ins;
+      for (; next < inserted.size() && static_cast<std::size_t>(inserted[next].first) == e; ++next) {
+        ins.push_back(inserted[next].second);
+      }
       if (ins.empty()) continue;
       // Ids follow lexicographic order, which is monotone along any segment.
       if (u < w) {
@@ -138,26 +155,23 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
                        PairSearch search = PairSearch::sweep) {
   Arrangement<K> arr;
   const std::array<const BasicPolygon<typename K::Point>*, 2> in = {&a, &b};
-  struct Ref {
-    int poly;
-    int ring;
-    int index;
-  };
-  std::vector<Ref> refs;
-  for (int p = 0; p < 2; ++p) {
-    for (int r = 0; r < static_cast<int>(in[p]->rings.size()); ++r) {
-      for (int v = 0; v < static_cast<int>(in[p]->rings[r].size()); ++v) refs.push_back({p, r, v});
-    }
+  std::size_t total = 0;
+  for (const auto* poly : in) {
+    for (const auto& ring : poly->rings) total += ring.size();
   }
   // Sort the points themselves (not indices into the rings): this runs on every vertex.
+  // The second member numbers the vertices polygon after polygon, ring after ring.
   std::vector<std::pair<typename K::Point, int>> sorted;
-  sorted.reserve(refs.size());
-  for (int i = 0; i < static_cast<int>(refs.size()); ++i) {
-    sorted.emplace_back(in[refs[i].poly]->rings[refs[i].ring][refs[i].index], i);
+  sorted.reserve(total);
+  for (const auto* poly : in) {
+    for (const auto& ring : poly->rings) {
+      for (const auto& q : ring) sorted.emplace_back(q, static_cast<int>(sorted.size()));
+    }
   }
   std::sort(sorted.begin(), sorted.end(),
             [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; });
-  std::vector<int> id_of(refs.size());
+  std::vector<int> id_of(total);
+  arr.points.reserve(total);
   for (std::size_t k = 0; k < sorted.size(); ++k) {
     if (k == 0 || compare_xy<K>(sorted[k - 1].first, sorted[k].first) != Sign::zero) {
       arr.points.push_back(sorted[k].first);
@@ -176,6 +190,8 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
     out.type = in[p]->type;
     std::vector<detail::IdRing> rings(in[p]->rings.size());
     for (std::size_t r = 0; r < rings.size(); ++r) {
+      rings[r].ids.reserve(in[p]->rings[r].size());
+      rings[r].input_index.reserve(in[p]->rings[r].size());
       for (std::size_t v = 0; v < in[p]->rings[r].size(); ++v, ++ref) {
         const int id = id_of[ref];
         auto& ids = rings[r].ids;

@@ -66,7 +66,7 @@ void normalize_orientations(Arrangement<K>& arr, Operation op) {
         }
       }
     }
-    const WindingLocator<K> locator(arr, std::move(edges));
+    const WindingLocator<K> locator(arr, std::move(edges), single ? 0 : poly.cycles.size());
     std::vector<bool> flip(poly.cycles.size(), false);
     for (std::size_t c = 0; c < poly.cycles.size(); ++c) {
       if (poly.cycles[c].size() < 3) continue;  // degenerate: both orientations at once

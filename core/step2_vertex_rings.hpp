@@ -14,6 +14,10 @@ void build_vertex_rings(Arrangement<K>& arr) {
   for (auto& poly : arr.polygon) {
     poly.edges.clear();
     poly.cycle_first_edge.assign(1, 0);
+    std::size_t total = 0;
+    for (const auto& cycle : poly.cycles) total += cycle.size();
+    poly.edges.reserve(total);
+    poly.cycle_first_edge.reserve(poly.cycles.size() + 1);
     for (int c = 0; c < static_cast<int>(poly.cycles.size()); ++c) {
       const auto& cycle = poly.cycles[c];
       for (std::size_t i = 0; i < cycle.size(); ++i) {

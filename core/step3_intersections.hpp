@@ -89,6 +89,10 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
   for (auto& poly : arr.polygon) {
     poly.fragments.clear();
     poly.cycle_first_fragment.assign(1, 0);
+    std::size_t total = poly.edges.size();
+    for (const auto& edge : poly.edges) total += edge.inserted.size();
+    poly.fragments.reserve(total);
+    poly.cycle_first_fragment.reserve(poly.cycle_first_edge.size());
     for (std::size_t c = 0; c + 1 < poly.cycle_first_edge.size(); ++c) {
       for (int e = poly.cycle_first_edge[c]; e < poly.cycle_first_edge[c + 1]; ++e) {
         Edge& edge = poly.edges[e];

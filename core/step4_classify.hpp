@@ -24,11 +24,11 @@ struct Classification {
 };
 
 template <Kernel K>
-WindingLocator<K> make_locator(const Arrangement<K>& arr, const PreparedPolygon& x) {
+WindingLocator<K> make_locator(const Arrangement<K>& arr, const PreparedPolygon& x, std::size_t queries) {
   std::vector<std::pair<int, int>> edges;
   edges.reserve(x.edges.size());
   for (const auto& e : x.edges) edges.push_back({e.src, e.dst});
-  return WindingLocator<K>(arr, std::move(edges));
+  return WindingLocator<K>(arr, std::move(edges), queries);
 }
 
 namespace detail {
@@ -81,7 +81,10 @@ template <Kernel K>
 Classification classify_fragments(Arrangement<K>& arr) {
   const int nv = arr.num_vertices();
   Classification cls{{RayTable(arr.polygon[0], nv), RayTable(arr.polygon[1], nv)}};
-  const std::array<WindingLocator<K>, 2> locators{make_locator(arr, arr.polygon[0]), make_locator(arr, arr.polygon[1])};
+  // Each locator answers one query per cycle of A and of B.
+  const std::size_t queries = arr.polygon[0].cycles.size() + arr.polygon[1].cycles.size();
+  const std::array<WindingLocator<K>, 2> locators{make_locator(arr, arr.polygon[0], queries),
+                                                  make_locator(arr, arr.polygon[1], queries)};
   for (auto& p : arr.polygon) {
     for (int c = 0; c + 1 < static_cast<int>(p.cycle_first_fragment.size()); ++c) {
       detail::walk_cycle(arr, p, c, 0, cls, locators[0]);
@@ -97,7 +100,7 @@ int far_depth_at(const Arrangement<K>& arr, int xi, int v) {
   const PreparedPolygon& x = arr.polygon[xi];
   if (arr.num_points() < 2) return 0;
   const int t = v == 0 ? 1 : 0;  // any other input point: v is on no edge of x
-  return x.far_sign * make_locator(arr, x).winding(v, t, Side::left);
+  return x.far_sign * make_locator(arr, x, 1).winding(v, t, Side::left);
 }
 
 }  // namespace mk

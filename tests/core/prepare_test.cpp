@@ -1,0 +1,104 @@
+// Input preparation: points touching their own polygon's edges are inserted into exactly the
+// edges they touch, ring by ring, and rings nobody touches are left as they were.
+// [MK89 §2.2] [MK89 §3.3 end]
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "arithmetic/kernels/exact_kernel.hpp"
+#include "arithmetic/kernels/rational_kernel.hpp"
+#include "core/prepare.hpp"
+
+namespace mk {
+namespace {
+
+template <class K>
+int id_of(const Arrangement<K>& arr, double x, double y) {
+  const auto q = K::point(Point{x, y});
+  for (int i = 0; i < arr.num_points(); ++i) {
+    if (compare_xy<K>(arr.points[i], q) == Sign::zero) return i;
+  }
+  return -1;
+}
+
+// The cycle of polygon p that holds all of `ids` (as point ids), or nullptr.
+const std::vector<int>* cycle_with(const PreparedPolygon& p, const std::vector<int>& ids) {
+  for (const auto& c : p.cycles) {
+    if (std::all_of(ids.begin(), ids.end(), [&](int id) { return std::find(c.begin(), c.end(), id) != c.end(); })) {
+      return &c;
+    }
+  }
+  return nullptr;
+}
+
+// True when b follows a in the cycle (cyclically).
+bool follows(const std::vector<int>& c, int a, int b) {
+  const auto it = std::find(c.begin(), c.end(), a);
+  if (it == c.end()) return false;
+  return *(it + 1 == c.end() ? c.begin() : it + 1) == b;
+}
+
+template <class K>
+void check_touching_rings() {
+  // Ring 0: untouched. Ring 1: a square whose bottom edge ring 2 touches at (2, 0). Ring 3: a
+  // square whose top edge ring 4 touches at (32, 4); ring 4 also has a vertex nobody touches.
+  const Polygon a{{
+                      {{20, 0}, {22, 0}, {22, 2}, {20, 2}},
+                      {{0, 0}, {4, 0}, {4, 4}, {0, 4}},
+                      {{2, 0}, {3, 2}, {1, 2}},
+                      {{30, 0}, {34, 0}, {34, 4}, {30, 4}},
+                      {{32, 4}, {31, 2}, {33, 2}},
+                  },
+                  PolygonType::island};
+  const Polygon b{{{{100, 100}, {101, 100}, {101, 101}}}, PolygonType::island};
+  const Arrangement<K> arr = prepare<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b));
+  const PreparedPolygon& p = arr.polygon[0];
+  ASSERT_EQ(p.cycles.size(), 5u);
+  std::size_t total = 0;
+  for (const auto& c : p.cycles) total += c.size();
+  EXPECT_EQ(total, 4u + 5u + 3u + 5u + 3u);  // one point inserted into rings 1 and 3
+
+  const auto id = [&](double x, double y) { return id_of(arr, x, y); };
+  const auto* ring0 = cycle_with(p, {id(20, 0), id(22, 0), id(22, 2), id(20, 2)});
+  ASSERT_NE(ring0, nullptr);
+  EXPECT_EQ(ring0->size(), 4u);
+  const auto* ring1 = cycle_with(p, {id(0, 0), id(4, 0), id(2, 0)});
+  ASSERT_NE(ring1, nullptr);
+  EXPECT_TRUE(follows(*ring1, id(0, 0), id(2, 0)));
+  EXPECT_TRUE(follows(*ring1, id(2, 0), id(4, 0)));
+  const auto* ring3 = cycle_with(p, {id(34, 4), id(30, 4), id(32, 4)});
+  ASSERT_NE(ring3, nullptr);
+  EXPECT_TRUE(follows(*ring3, id(34, 4), id(32, 4)));
+  EXPECT_TRUE(follows(*ring3, id(32, 4), id(30, 4)));
+  EXPECT_EQ(cycle_with(p, {id(2, 0), id(3, 2), id(1, 2)})->size(), 3u);
+  EXPECT_EQ(cycle_with(p, {id(32, 4), id(31, 2), id(33, 2)})->size(), 3u);
+}
+
+TEST(Prepare, TouchingPointsAreInsertedIntoTheEdgesTheyTouchOnly) {
+  check_touching_rings<RationalKernel>();
+  check_touching_rings<ExactKernel>();
+}
+
+TEST(Prepare, SeveralPointsOnOneEdgeAreInsertedInOrderAlongIt) {
+  // Two triangles touch the square's top edge, which runs from (4, 4) to (0, 4).
+  const Polygon a{{
+                      {{0, 0}, {4, 0}, {4, 4}, {0, 4}},
+                      {{1, 4}, {1.5, 3}, {0.5, 3}},
+                      {{3, 4}, {3.5, 3}, {2.5, 3}},
+                  },
+                  PolygonType::island};
+  const Polygon b{{{{100, 100}, {101, 100}, {101, 101}}}, PolygonType::island};
+  using K = RationalKernel;
+  const Arrangement<K> arr = prepare<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b));
+  const auto id = [&](double x, double y) { return id_of(arr, x, y); };
+  const auto* outer = cycle_with(arr.polygon[0], {id(0, 0), id(4, 4), id(1, 4), id(3, 4)});
+  ASSERT_NE(outer, nullptr);
+  EXPECT_EQ(outer->size(), 6u);
+  EXPECT_TRUE(follows(*outer, id(4, 4), id(3, 4)));
+  EXPECT_TRUE(follows(*outer, id(3, 4), id(1, 4)));
+  EXPECT_TRUE(follows(*outer, id(1, 4), id(0, 4)));
+}
+
+}  // namespace
+}  // namespace mk
