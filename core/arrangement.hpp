@@ -15,13 +15,12 @@
 
 namespace mk {
 
-// An original edge of a prepared polygon, src -> dst (point ids), with the vertices that
-// step 3 inserted strictly inside it, in order from src to dst.
+// An original edge of a prepared polygon, src -> dst (point ids). The vertices step 3
+// inserts strictly inside it are known through its fragments (Fragment::edge).
 struct Edge {
   int src = -1;
   int dst = -1;
   int cycle = -1;
-  std::vector<int> inserted;
 };
 
 // An edge fragment [MK89 §3.1 step 4]: the piece of `edge` between two consecutive vertices

@@ -7,10 +7,13 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "core/arrangement.hpp"
 #include "core/error.hpp"
@@ -60,12 +63,16 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
     }
   }
   const int na = static_cast<int>(ea.size());
+  // The vertices to insert strictly inside each edge, as (edge index, vertex id) per
+  // polygon: few next to the edges, so kept flat and grouped by edge below.
+  std::array<std::vector<std::pair<int, int>>, 2> inserted;
   std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
   const auto& pts = arr.points;
   for_each_candidate_pair<K>(pts, arr.x_rank, items, true, search, [&](int i, int j) {
     if (i > j) std::swap(i, j);  // i indexes A, j indexes B
-    Edge& a = ea[i];
-    Edge& b = eb[j - na];
+    const int jb = j - na;
+    const Edge& a = ea[i];
+    const Edge& b = eb[jb];
     if (items[i].lo == items[j].lo && items[i].hi == items[j].hi) return;  // shared_edge
     const auto rel = relate_segments_by_id<K>(pts, a.src, a.dst, b.src, b.dst);
     if (rel.proper_crossing) {
@@ -75,38 +82,44 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
         arr.crossings.push_back(K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst]));
         if constexpr (!K::is_exact) check_finite_crossing<K>(arr, a, b);
       }
-      a.inserted.push_back(it->second);
-      b.inserted.push_back(it->second);
+      inserted[0].emplace_back(i, it->second);
+      inserted[1].emplace_back(jb, it->second);
       return;
     }
     // vertex_on_edge and collinear_overlap: endpoints strictly inside the other edge.
-    if (rel.c_inside_ab) a.inserted.push_back(b.src);
-    if (rel.d_inside_ab) a.inserted.push_back(b.dst);
-    if (rel.a_inside_cd) b.inserted.push_back(a.src);
-    if (rel.b_inside_cd) b.inserted.push_back(a.dst);
+    if (rel.c_inside_ab) inserted[0].emplace_back(i, b.src);
+    if (rel.d_inside_ab) inserted[0].emplace_back(i, b.dst);
+    if (rel.a_inside_cd) inserted[1].emplace_back(jb, a.src);
+    if (rel.b_inside_cd) inserted[1].emplace_back(jb, a.dst);
   });
 
-  for (auto& poly : arr.polygon) {
+  for (int g = 0; g < 2; ++g) {
+    PreparedPolygon& poly = arr.polygon[g];
+    auto& ins = inserted[g];
+    std::sort(ins.begin(), ins.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     poly.fragments.clear();
     poly.cycle_first_fragment.assign(1, 0);
-    std::size_t total = poly.edges.size();
-    for (const auto& edge : poly.edges) total += edge.inserted.size();
-    poly.fragments.reserve(total);
+    poly.fragments.reserve(poly.edges.size() + ins.size());
     poly.cycle_first_fragment.reserve(poly.cycle_first_edge.size());
+    std::size_t next = 0;  // first entry of `ins` not yet placed
+    std::vector<int> on_edge;
     for (std::size_t c = 0; c + 1 < poly.cycle_first_edge.size(); ++c) {
       for (int e = poly.cycle_first_edge[c]; e < poly.cycle_first_edge[c + 1]; ++e) {
-        Edge& edge = poly.edges[e];
-        auto& ins = edge.inserted;
-        const auto& s = arr.points[edge.src];
-        const auto& d = arr.points[edge.dst];
-        std::sort(ins.begin(), ins.end(), [&](int x, int y) {
-          return x != y && K::compare_along(s, d, arr.vertex(x), arr.vertex(y)) == Sign::negative;
-        });
-        ins.erase(std::unique(ins.begin(), ins.end()), ins.end());
+        const Edge& edge = poly.edges[e];
         int from = edge.src;
-        for (const int id : ins) {
-          poly.fragments.push_back({from, id, e, {}, {}});
-          from = id;
+        if (next < ins.size() && ins[next].first == e) {
+          on_edge.clear();
+          for (; next < ins.size() && ins[next].first == e; ++next) on_edge.push_back(ins[next].second);
+          const auto& s = arr.points[edge.src];
+          const auto& d = arr.points[edge.dst];
+          std::sort(on_edge.begin(), on_edge.end(), [&](int x, int y) {
+            return x != y && K::compare_along(s, d, arr.vertex(x), arr.vertex(y)) == Sign::negative;
+          });
+          on_edge.erase(std::unique(on_edge.begin(), on_edge.end()), on_edge.end());
+          for (const int id : on_edge) {
+            poly.fragments.push_back({from, id, e, {}, {}});
+            from = id;
+          }
         }
         poly.fragments.push_back({from, edge.dst, e, {}, {}});
       }

@@ -1,0 +1,90 @@
+// peak_memory [WORKLOAD] [N] [KERNEL]: the peak memory of one mkbool intersection through the
+// public API (mk::compute, result polygons included), per input vertex. Prints one JSON line.
+// WORKLOAD is blob (default), star, checkerboard or nested_squares; N the size argument of
+// bench/workloads.hpp (default 1000000); KERNEL any of mk::kernel_names() (default: the
+// default kernel). [BRIEF §6] (memory: at most 256 bytes per input vertex at n = 1e6)
+//
+// How it measures: the generated inputs stay in memory during the operation, so the
+// operation's own peak is the process's peak resident set (getrusage's ru_maxrss, which the
+// kernel keeps as a high-water mark) minus the resident set just before the call
+// (/proc/self/statm). The generator's temporary copies are freed before that reading.
+// Preconditions: Linux (/proc/self/statm).
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "api/mkbool.hpp"
+#include "bench/workloads.hpp"
+
+namespace {
+
+long resident_kib() {
+  std::ifstream statm("/proc/self/statm");
+  long size = 0;
+  long resident = 0;
+  statm >> size >> resident;
+  return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
+long peak_kib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;
+}
+
+mk::bench::WorkloadKind kind_named(const std::string& name) {
+  using mk::bench::WorkloadKind;
+  for (const auto k : {WorkloadKind::blob, WorkloadKind::star, WorkloadKind::checkerboard, WorkloadKind::nested_squares}) {
+    if (name == mk::bench::workload_name(k)) return k;
+  }
+  std::cerr << "peak_memory: unknown workload '" << name << "' (blob, star, checkerboard, nested_squares)\n";
+  std::exit(2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string workload = argc > 1 ? argv[1] : "blob";
+  const std::size_t n = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1000000;
+  mk::BooleanOptions options;
+  options.kernel = argc > 3 ? argv[3] : std::string(mk::default_kernel());
+  options.area = false;
+  mk::Polygon a;
+  mk::Polygon b;
+  {
+    mk::bench::Workload w = mk::bench::make_workload(kind_named(workload), n);
+    a = std::move(w.a);
+    b = std::move(w.b);
+  }  // the peers' copies of the input are freed here
+  const std::size_t vertices = [&] {
+    std::size_t v = 0;
+    for (const auto* p : {&a, &b}) {
+      for (const auto& ring : p->rings) v += ring.size();
+    }
+    return v;
+  }();
+  const long before = resident_kib();
+  try {
+    const mk::BooleanOutput out = mk::compute(a, b, options);
+    const long peak = peak_kib();
+    const double op_bytes = static_cast<double>(peak - before) * 1024.0;
+    const double all_bytes = static_cast<double>(peak) * 1024.0;
+    std::printf(
+        "{\"workload\":\"%s\",\"n\":%zu,\"kernel\":\"%s\",\"vertices_in\":%zu,\"vertices_out\":%zu,"
+        "\"op_ms\":%.1f,\"peak_rss_mib\":%.1f,\"before_op_mib\":%.1f,\"op_bytes_per_vertex\":%.1f,"
+        "\"process_bytes_per_vertex\":%.1f}\n",
+        workload.c_str(), n, out.stats.kernel.c_str(), vertices, out.stats.vertices_out,
+        static_cast<double>(out.stats.op_ns) / 1e6, static_cast<double>(peak) / 1024.0,
+        static_cast<double>(before) / 1024.0, op_bytes / static_cast<double>(vertices),
+        all_bytes / static_cast<double>(vertices));
+  } catch (const std::exception& e) {
+    std::cerr << "peak_memory: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
