@@ -20,6 +20,9 @@
 #include "arithmetic/predicates_counters.hpp"
 #include "arithmetic/predicates_gmp.hpp"
 #include "arithmetic/predicates_naive.hpp"
+#ifdef MK_WITH_CGAL
+#include "arithmetic/kernels/cgal_kernel.hpp"
+#endif
 
 namespace {
 
@@ -49,6 +52,20 @@ struct Interval {
     return mk::interval_filter::orient_vectors(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
   }
 };
+#ifdef MK_WITH_CGAL
+// CgalKernel's predicates: CGAL::orientation on Epick points (CGAL's static and dynamic
+// filters, then its exact number type), and CgalKernel::orient_vectors.
+struct Cgal {
+  static constexpr const char* name = "Cgal";
+  static int orient2d(const double* v) {
+    return static_cast<int>(mk::CgalKernel::orient2d({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}));
+  }
+  static int orient_vectors(const double* v) {
+    return static_cast<int>(mk::CgalKernel::orient_vectors({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}));
+  }
+};
+#endif
+
 // The ground truth of the tests: mpq rationals.
 struct Rational {
   static constexpr const char* name = "Rational";
@@ -173,6 +190,9 @@ int main(int argc, char** argv) {
   register_kind<Double>();
   register_kind<Adaptive>();
   register_kind<Interval>();
+#ifdef MK_WITH_CGAL
+  register_kind<Cgal>();
+#endif
   register_kind<GmpFallback>();
   register_kind<Rational>();
   benchmark::Initialize(&argc, argv);
