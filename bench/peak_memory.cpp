@@ -12,11 +12,13 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <string_view>
 
 #include "api/mkbool.hpp"
 #include "bench/workloads.hpp"
@@ -37,12 +39,8 @@ long peak_kib() {
   return u.ru_maxrss;
 }
 
-mk::bench::WorkloadKind kind_named(const std::string& name) {
-  using mk::bench::WorkloadKind;
-  for (const auto k : {WorkloadKind::blob, WorkloadKind::star, WorkloadKind::checkerboard, WorkloadKind::nested_squares}) {
-    if (name == mk::bench::workload_name(k)) return k;
-  }
-  std::cerr << "peak_memory: unknown workload '" << name << "' (blob, star, checkerboard, nested_squares)\n";
+[[noreturn]] void usage_error(const std::string& message) {
+  std::cerr << "peak_memory: " << message << "\nusage: peak_memory [WORKLOAD] [N] [KERNEL]\n";
   std::exit(2);
 }
 
@@ -50,14 +48,23 @@ mk::bench::WorkloadKind kind_named(const std::string& name) {
 
 int main(int argc, char** argv) {
   const std::string workload = argc > 1 ? argv[1] : "blob";
-  const std::size_t n = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1000000;
+  const auto kind = mk::bench::workload_named(workload);
+  if (!kind) usage_error("unknown workload '" + workload + "' (blob, star, checkerboard, nested_squares)");
+  std::size_t n = 1000000;
+  if (argc > 2) {
+    const std::string_view text = argv[2];
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (ec != std::errc{} || end != text.data() + text.size() || n < 3 || n > 10000000) {
+      usage_error("N must be a whole number from 3 to 10000000, not '" + std::string(text) + "'");
+    }
+  }
   mk::BooleanOptions options;
   options.kernel = argc > 3 ? argv[3] : std::string(mk::default_kernel());
   options.area = false;
   mk::Polygon a;
   mk::Polygon b;
   {
-    mk::bench::Workload w = mk::bench::make_workload(kind_named(workload), n);
+    mk::bench::Workload w = mk::bench::make_workload(*kind, n);
     a = std::move(w.a);
     b = std::move(w.b);
   }  // the peers' copies of the input are freed here

@@ -4,8 +4,10 @@
 // Preconditions: n >= 3 for blob and star, n >= 1 for checkerboard and nested squares.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,6 +26,17 @@ constexpr std::string_view workload_name(WorkloadKind w) {
     case WorkloadKind::nested_squares: return "nested_squares";
   }
   return "?";
+}
+
+inline constexpr std::array<WorkloadKind, 4> all_workload_kinds{WorkloadKind::blob, WorkloadKind::star,
+                                                                WorkloadKind::checkerboard, WorkloadKind::nested_squares};
+
+// The kind whose workload_name is `name`, if any.
+constexpr std::optional<WorkloadKind> workload_named(std::string_view name) {
+  for (const WorkloadKind k : all_workload_kinds) {
+    if (workload_name(k) == name) return k;
+  }
+  return std::nullopt;
 }
 
 // Two inputs in both forms the benchmark needs: OGC polygons-with-holes (shells counter-

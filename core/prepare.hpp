@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/arrangement.hpp"
+#include "core/edge_insertions.hpp"
 #include "core/error.hpp"
 #include "core/pairs.hpp"
 #include "predicates/segments.hpp"
@@ -88,9 +89,7 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
       refs.push_back({r, static_cast<int>(k)});
     }
   }
-  // Points of the polygon inserted into its own edges, as (edge index, point id): rare, so
-  // kept flat and grouped by edge afterwards.
-  std::vector<std::pair<int, int>> inserted;
+  EdgeInsertions inserted;  // points of the polygon on its own edges, by edge index
   for_each_candidate_pair<K>(pts, x_rank, items, false, search, [&](int i, int j) {
     const SweepItem& a = items[i];
     const SweepItem& b = items[j];
@@ -103,20 +102,20 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
                          edge_name(poly_name, rings[eb.ring], eb.ring, eb.k) +
                          ": the polygon is not orientable and cannot be made vertex-complete");
     }
-    if (rel.c_inside_ab) inserted.emplace_back(i, b.lo);
-    if (rel.d_inside_ab) inserted.emplace_back(i, b.hi);
-    if (rel.a_inside_cd) inserted.emplace_back(j, a.lo);
-    if (rel.b_inside_cd) inserted.emplace_back(j, a.hi);
+    if (rel.c_inside_ab) inserted.add(i, b.lo);
+    if (rel.d_inside_ab) inserted.add(i, b.hi);
+    if (rel.a_inside_cd) inserted.add(j, a.lo);
+    if (rel.b_inside_cd) inserted.add(j, a.hi);
   });
   if (inserted.empty()) return;
-  std::sort(inserted.begin(), inserted.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::size_t next = 0;  // first entry of `inserted` not yet placed
-  std::size_t e = 0;
+  inserted.group();
+  std::vector<int> ins;
+  int e = 0;
   for (auto& ring : rings) {
     if (ring.ids.size() < 2) continue;
-    const std::size_t ring_end = e + ring.ids.size();
-    if (next == inserted.size() || static_cast<std::size_t>(inserted[next].first) >= ring_end) {
-      e = ring_end;  // nothing inserted into this ring
+    const int ring_end = e + static_cast<int>(ring.ids.size());
+    if (!inserted.any_before(ring_end)) {  // nothing inserted into this ring
+      e = ring_end;
       continue;
     }
     IdRing out;
@@ -125,11 +124,7 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
       const int w = ring.ids[(k + 1) % ring.ids.size()];
       out.ids.push_back(u);
       out.input_index.push_back(ring.input_index[k]);
-      std::vector<int> ins;
-      for (; next < inserted.size() && static_cast<std::size_t>(inserted[next].first) == e; ++next) {
-        ins.push_back(inserted[next].second);
-      }
-      if (ins.empty()) continue;
+      if (!inserted.take(e, ins)) continue;
       // Ids follow lexicographic order, which is monotone along any segment.
       if (u < w) {
         std::sort(ins.begin(), ins.end());

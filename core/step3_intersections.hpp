@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/arrangement.hpp"
+#include "core/edge_insertions.hpp"
 #include "core/error.hpp"
 #include "core/pairs.hpp"
 #include "predicates/segments.hpp"
@@ -63,9 +64,7 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
     }
   }
   const int na = static_cast<int>(ea.size());
-  // The vertices to insert strictly inside each edge, as (edge index, vertex id) per
-  // polygon: few next to the edges, so kept flat and grouped by edge below.
-  std::array<std::vector<std::pair<int, int>>, 2> inserted;
+  std::array<EdgeInsertions, 2> inserted;  // per polygon, by edge index
   std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
   const auto& pts = arr.points;
   for_each_candidate_pair<K>(pts, arr.x_rank, items, true, search, [&](int i, int j) {
@@ -82,34 +81,31 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
         arr.crossings.push_back(K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst]));
         if constexpr (!K::is_exact) check_finite_crossing<K>(arr, a, b);
       }
-      inserted[0].emplace_back(i, it->second);
-      inserted[1].emplace_back(jb, it->second);
+      inserted[0].add(i, it->second);
+      inserted[1].add(jb, it->second);
       return;
     }
     // vertex_on_edge and collinear_overlap: endpoints strictly inside the other edge.
-    if (rel.c_inside_ab) inserted[0].emplace_back(i, b.src);
-    if (rel.d_inside_ab) inserted[0].emplace_back(i, b.dst);
-    if (rel.a_inside_cd) inserted[1].emplace_back(jb, a.src);
-    if (rel.b_inside_cd) inserted[1].emplace_back(jb, a.dst);
+    if (rel.c_inside_ab) inserted[0].add(i, b.src);
+    if (rel.d_inside_ab) inserted[0].add(i, b.dst);
+    if (rel.a_inside_cd) inserted[1].add(jb, a.src);
+    if (rel.b_inside_cd) inserted[1].add(jb, a.dst);
   });
 
   for (int g = 0; g < 2; ++g) {
     PreparedPolygon& poly = arr.polygon[g];
-    auto& ins = inserted[g];
-    std::sort(ins.begin(), ins.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    EdgeInsertions& ins = inserted[g];
+    ins.group();
     poly.fragments.clear();
     poly.cycle_first_fragment.assign(1, 0);
     poly.fragments.reserve(poly.edges.size() + ins.size());
     poly.cycle_first_fragment.reserve(poly.cycle_first_edge.size());
-    std::size_t next = 0;  // first entry of `ins` not yet placed
     std::vector<int> on_edge;
     for (std::size_t c = 0; c + 1 < poly.cycle_first_edge.size(); ++c) {
       for (int e = poly.cycle_first_edge[c]; e < poly.cycle_first_edge[c + 1]; ++e) {
         const Edge& edge = poly.edges[e];
         int from = edge.src;
-        if (next < ins.size() && ins[next].first == e) {
-          on_edge.clear();
-          for (; next < ins.size() && ins[next].first == e; ++next) on_edge.push_back(ins[next].second);
+        if (ins.take(e, on_edge)) {
           const auto& s = arr.points[edge.src];
           const auto& d = arr.points[edge.dst];
           std::sort(on_edge.begin(), on_edge.end(), [&](int x, int y) {

@@ -1,0 +1,45 @@
+// Vertices to insert strictly inside edges, collected as (edge, vertex) pairs in any order
+// while pairs of edges are examined, then read back edge by edge in increasing edge order.
+// They are few next to the edges, so they are kept in one flat list rather than one list
+// per edge. [MK89 §3.3] (insertion into the vertex rings)
+// Preconditions: group() after the last add() and before the first take(); take() is
+// called with increasing edge indices.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace mk {
+
+class EdgeInsertions {
+ public:
+  void add(int edge, int vertex) { list_.emplace_back(edge, vertex); }
+  bool empty() const { return list_.empty(); }
+  std::size_t size() const { return list_.size(); }
+
+  // Orders the pairs by edge.
+  void group() {
+    std::sort(list_.begin(), list_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    next_ = 0;
+  }
+
+  // True when an edge below `end` that has not been taken has insertions.
+  bool any_before(int end) const { return next_ < list_.size() && list_[next_].first < end; }
+
+  // Replaces `out` by the vertices inserted into `edge`, in no particular order and possibly
+  // repeated; false when there are none. Edges below `edge` not taken are passed over.
+  bool take(int edge, std::vector<int>& out) {
+    out.clear();
+    while (next_ < list_.size() && list_[next_].first < edge) ++next_;
+    for (; next_ < list_.size() && list_[next_].first == edge; ++next_) out.push_back(list_[next_].second);
+    return !out.empty();
+  }
+
+ private:
+  std::vector<std::pair<int, int>> list_;
+  std::size_t next_ = 0;
+};
+
+}  // namespace mk
