@@ -83,4 +83,16 @@ struct Arrangement {
   }
 };
 
+// Frees the edges and fragments of both polygons (what steps 2-5 built), keeping the points,
+// the crossings and the cycles.
+template <Kernel K>
+void release_fragments(Arrangement<K>& arr) {
+  for (PreparedPolygon& p : arr.polygon) {
+    std::vector<Edge>().swap(p.edges);
+    std::vector<int>().swap(p.cycle_first_edge);
+    std::vector<Fragment>().swap(p.fragments);
+    std::vector<int>().swap(p.cycle_first_fragment);
+  }
+}
+
 }  // namespace mk

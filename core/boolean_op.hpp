@@ -8,6 +8,7 @@
 #include <functional>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/arrangement.hpp"
@@ -38,6 +39,8 @@ struct Stats {
   std::size_t vertices_out = 0;
 };
 
+// The result. Its arrangement keeps the input points, the crossings and the prepared cycles;
+// the edges and fragments of steps 2-5 are released before step 6 (a trace hook sees them).
 template <Kernel K>
 struct BooleanResult {
   Arrangement<K> arrangement;       // owns the vertices the cycles refer to
@@ -69,21 +72,27 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   hook(Step::vertex_rings, arr);
   insert_intersections(arr, opt.pair_search);  // step 3
   hook(Step::intersections, arr);
-  const Classification cls = classify_fragments(arr);  // step 4
+  Classification cls = classify_fragments(arr);  // step 4
   hook(Step::classified, arr);
-  const SelectedFragments selected = select_fragments(arr, cls, opt.op, opt.regular);  // step 5
+  SelectedFragments selected = select_fragments(arr, cls, opt.op, opt.regular);  // step 5
   const auto build = [&](auto& ef) {
-    ef.insert_batch(selected.batch[0], opt.regular);
-    ef.insert_batch(selected.batch[1], opt.regular);
-    std::vector<bool> touched(static_cast<std::size_t>(arr.num_vertices()), false);
-    ef.for_each([&](const EfEntry& e) { touched[e.from] = touched[e.to] = true; });
-    hook(Step::selected, arr);
-    res.cycles = construct_result_cycles(arr, ef, opt.op);  // step 6
-    if (!opt.regular) {
-      for (const int v : select_isolated_points(arr, cls, opt.op, touched)) {
-        res.cycles.push_back({{v}, {}, PolygonType::island, true});
-      }
+    for (auto& batch : selected.batch) {
+      ef.insert_batch(std::move(batch), opt.regular);
+      std::vector<EfEntry>().swap(batch);
     }
+    std::vector<int> isolated;
+    if (!opt.regular) {
+      std::vector<bool> touched(static_cast<std::size_t>(arr.num_vertices()), false);
+      ef.for_each([&](const EfEntry& e) { touched[e.from] = touched[e.to] = true; });
+      isolated = select_isolated_points(arr, cls, opt.op, touched);
+    }
+    hook(Step::selected, arr);
+    // Step 6 needs EF and the vertices only: the per-edge data of steps 2-5 is released
+    // first, so that step 6's arrays reuse its memory instead of growing the heap.
+    for (RayTable& rays : cls.rays) rays = RayTable();
+    release_fragments(arr);
+    res.cycles = construct_result_cycles(arr, ef, opt.op);  // step 6
+    for (const int v : isolated) res.cycles.push_back({{v}, {}, PolygonType::island, true});
   };
   const std::size_t capacity = selected.batch[0].size() + selected.batch[1].size();
   if (opt.ef == EfOrganisation::sorted) {

@@ -99,14 +99,17 @@ class SortedEdgeTable {
 };
 
 // [MK89 §3.3, second method] Linear open addressing keyed by the fragment's first vertex.
-// Deletion clears `alive` and leaves the slot occupied, so probe sequences stay intact.
+// The entries live in one array in insertion order; a slot holds an entry's index + 1
+// (0 = empty), so the table costs 4 bytes per slot at load factor at most 1/2. Deletion
+// clears `alive` and leaves the slot occupied, so probe sequences stay intact.
 class HashEdgeTable {
  public:
   explicit HashEdgeTable(std::size_t capacity) {
     std::size_t size = 16;
     while (size < 2 * capacity + 2) size *= 2;
-    slots_.assign(size, Slot{});
+    slots_.assign(size, 0);
     mask_ = size - 1;
+    entries_.reserve(capacity);
   }
 
   void insert_batch(const std::vector<EfEntry>& batch, bool regular) {
@@ -123,41 +126,38 @@ class HashEdgeTable {
       }
     }
     std::size_t i = hash(e.from);
-    while (slots_[i].used) i = (i + 1) & mask_;
-    slots_[i] = {true, e};
-    entries_.push_back(i);
+    while (slots_[i] != 0) i = (i + 1) & mask_;
+    entries_.push_back(e);
+    slots_[i] = static_cast<std::uint32_t>(entries_.size());
   }
 
   template <class F>
   void for_each_from(int v, F&& f) {
-    for (std::size_t i = hash(v); slots_[i].used; i = (i + 1) & mask_) {
-      if (slots_[i].entry.from == v && slots_[i].entry.alive) f(slots_[i].entry);
+    for (std::size_t i = hash(v); slots_[i] != 0; i = (i + 1) & mask_) {
+      EfEntry& en = entries_[slots_[i] - 1];
+      if (en.from == v && en.alive) f(en);
     }
   }
   template <class F>
   void for_each(F&& f) {
-    for (const std::size_t i : entries_) {
-      if (slots_[i].entry.alive) f(slots_[i].entry);
+    for (EfEntry& en : entries_) {
+      if (en.alive) f(en);
     }
   }
 
  private:
-  struct Slot {
-    bool used = false;
-    EfEntry entry;
-  };
   std::size_t hash(int v) const {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)) * 0x9E3779B97F4A7C15ULL >> 17) & mask_;
   }
   EfEntry* find(int from, int to) {
-    for (std::size_t i = hash(from); slots_[i].used; i = (i + 1) & mask_) {
-      auto& en = slots_[i].entry;
+    for (std::size_t i = hash(from); slots_[i] != 0; i = (i + 1) & mask_) {
+      EfEntry& en = entries_[slots_[i] - 1];
       if (en.from == from && en.to == to && en.alive) return &en;
     }
     return nullptr;
   }
-  std::vector<Slot> slots_;
-  std::vector<std::size_t> entries_;  // insertion order, for a deterministic walk
+  std::vector<std::uint32_t> slots_;
+  std::vector<EfEntry> entries_;  // insertion order, for a deterministic walk
   std::size_t mask_ = 0;
 };
 

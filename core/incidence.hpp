@@ -20,37 +20,68 @@ struct Ray {
   int fragment = -1;
 };
 
+// The rays of one polygon's fragments, grouped by vertex. A ray is stored as one int
+// (2 fragment + 1 when it arrives) and expanded into a Ray when read: the table costs
+// 4 bytes per vertex and 8 per fragment, and is built without a second per-vertex array.
+// The polygon must outlive the table and keep its fragments and edges in place.
 class RayTable {
  public:
   RayTable() = default;
-  RayTable(const PreparedPolygon& poly, int num_vertices) {
+  RayTable(const PreparedPolygon& poly, int num_vertices) : poly_(&poly) {
+    // begin_[v] first counts v's rays, then holds the end of v's group, and is moved down
+    // to its start as the group is filled from the back.
     begin_.assign(static_cast<std::size_t>(num_vertices) + 1, 0);
     for (const auto& f : poly.fragments) {
-      ++begin_[f.from + 1];
-      ++begin_[f.to + 1];
+      ++begin_[f.from];
+      ++begin_[f.to];
     }
-    for (std::size_t i = 1; i < begin_.size(); ++i) begin_[i] += begin_[i - 1];
-    rays_.resize(static_cast<std::size_t>(begin_.back()));
-    std::vector<int> fill(begin_.begin(), begin_.end() - 1);
-    for (int i = 0; i < static_cast<int>(poly.fragments.size()); ++i) {
+    int total = 0;
+    for (int& b : begin_) {
+      total += b;
+      b = total;
+    }
+    codes_.resize(static_cast<std::size_t>(total));
+    for (int i = static_cast<int>(poly.fragments.size()) - 1; i >= 0; --i) {
       const auto& f = poly.fragments[i];
-      const auto& e = poly.edges[f.edge];
-      rays_[fill[f.from]++] = {{e.src, e.dst}, +1, i};
-      rays_[fill[f.to]++] = {{e.dst, e.src}, -1, i};
+      codes_[--begin_[f.to]] = 2 * i + 1;
+      codes_[--begin_[f.from]] = 2 * i;
     }
   }
+
+  class Iterator {
+   public:
+    Iterator(const PreparedPolygon* poly, const int* code) : poly_(poly), code_(code) {}
+    Ray operator*() const {
+      const int i = *code_ >> 1;
+      const Edge& e = poly_->edges[poly_->fragments[i].edge];
+      if (*code_ & 1) return {{e.dst, e.src}, -1, i};
+      return {{e.src, e.dst}, +1, i};
+    }
+    Iterator& operator++() {
+      ++code_;
+      return *this;
+    }
+    friend bool operator==(const Iterator& a, const Iterator& b) { return a.code_ == b.code_; }
+
+   private:
+    const PreparedPolygon* poly_;
+    const int* code_;
+  };
   struct Span {
-    const Ray* b;
-    const Ray* e;
-    const Ray* begin() const { return b; }
-    const Ray* end() const { return e; }
+    Iterator b;
+    Iterator e;
+    Iterator begin() const { return b; }
+    Iterator end() const { return e; }
     bool empty() const { return b == e; }
   };
-  Span at(int v) const { return {rays_.data() + begin_[v], rays_.data() + begin_[v + 1]}; }
+  Span at(int v) const {
+    return {{poly_, codes_.data() + begin_[v]}, {poly_, codes_.data() + begin_[v + 1]}};
+  }
 
  private:
+  const PreparedPolygon* poly_ = nullptr;
   std::vector<int> begin_;
-  std::vector<Ray> rays_;
+  std::vector<int> codes_;
 };
 
 // Fragments of polygon x lying on u -> w: (same direction, opposite direction), found among

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <span>
 #include <vector>
 
 #include "core/arrangement.hpp"
@@ -16,10 +17,11 @@ namespace mk {
 template <Kernel K>
 class WindingLocator {
  public:
-  // Edges as (src, dst) point ids. `queries` is how many queries are expected: when they
-  // are few, each scans the edges directly (as cheap as indexing them once).
-  WindingLocator(const Arrangement<K>& arr, std::vector<std::pair<int, int>> edges, std::size_t queries)
-      : arr_(arr), edges_(std::move(edges)) {
+  // Edges src -> dst as point ids, viewed, not copied: they must outlive the locator.
+  // `queries` is how many queries are expected: when they are few, each scans the edges
+  // directly (as cheap as indexing them once).
+  WindingLocator(const Arrangement<K>& arr, std::span<const Edge> edges, std::size_t queries)
+      : arr_(arr), edges_(edges) {
     if (queries <= kDirectScanQueries) {
       direct_ = true;
       return;
@@ -28,15 +30,15 @@ class WindingLocator {
     buckets_ = std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(ranks), edges_.size() / 2 + 1));
     ranks_ = ranks;
     begin_.assign(buckets_ + 1, 0);
-    for (const auto& [a, b] : edges_) {
-      const auto [lo, hi] = bucket_span(a, b);
+    for (const Edge& e : edges_) {
+      const auto [lo, hi] = bucket_span(e.src, e.dst);
       for (std::size_t k = lo; k <= hi; ++k) ++begin_[k + 1];
     }
     for (std::size_t k = 1; k < begin_.size(); ++k) begin_[k] += begin_[k - 1];
     items_.resize(begin_.back());
     std::vector<std::size_t> fill(begin_.begin(), begin_.end() - 1);
     for (int e = 0; e < static_cast<int>(edges_.size()); ++e) {
-      const auto [lo, hi] = bucket_span(edges_[e].first, edges_[e].second);
+      const auto [lo, hi] = bucket_span(edges_[e].src, edges_[e].dst);
       for (std::size_t k = lo; k <= hi; ++k) items_[fill[k]++] = e;
     }
   }
@@ -63,7 +65,9 @@ class WindingLocator {
   void for_each_crossing(int v, int t, Side side, F&& f) const {
     const int r = arr_.x_rank[v];
     const auto visit = [&](int e) {
-      const auto [a, b] = edges_[static_cast<std::size_t>(e)];
+      const Edge& edge = edges_[static_cast<std::size_t>(e)];
+      const int a = edge.src;
+      const int b = edge.dst;
       const int ra = arr_.x_rank[a];
       const int rb = arr_.x_rank[b];
       if (r < std::min(ra, rb) || r > std::max(ra, rb)) return;
@@ -87,7 +91,7 @@ class WindingLocator {
   }
 
   const Arrangement<K>& arr_;
-  std::vector<std::pair<int, int>> edges_;
+  std::span<const Edge> edges_;
   bool direct_ = false;
   std::size_t buckets_ = 1;
   int ranks_ = 1;

@@ -173,6 +173,7 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
     }
     id_of[sorted[k].second] = static_cast<int>(arr.points.size()) - 1;
   }
+  std::vector<std::pair<typename K::Point, int>>().swap(sorted);  // its memory serves the rings
   arr.x_rank.resize(arr.points.size());
   for (std::size_t i = 0; i < arr.points.size(); ++i) {
     arr.x_rank[i] = i == 0 ? 0 : arr.x_rank[i - 1] + (K::compare_x(arr.points[i - 1], arr.points[i]) != Sign::zero);

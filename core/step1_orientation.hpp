@@ -57,16 +57,17 @@ void normalize_orientations(Arrangement<K>& arr, Operation op) {
     // A polygon with one cycle has it at depth 0; only nested parts need the ray test.
     const bool single = poly.cycles.size() == 1;
     std::unordered_map<std::uint64_t, int> edge_count;
-    std::vector<std::pair<int, int>> edges;
+    std::vector<Edge> edges;
     if (!single) {
-      for (const auto& cycle : poly.cycles) {
+      for (int c = 0; c < static_cast<int>(poly.cycles.size()); ++c) {
+        const auto& cycle = poly.cycles[c];
         for (std::size_t i = 0; i < cycle.size(); ++i) {
           ++edge_count[segment_key(cycle[i], cycle[(i + 1) % cycle.size()])];
-          edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()]});
+          edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()], c});
         }
       }
     }
-    const WindingLocator<K> locator(arr, std::move(edges), single ? 0 : poly.cycles.size());
+    const WindingLocator<K> locator(arr, edges, single ? 0 : poly.cycles.size());
     std::vector<bool> flip(poly.cycles.size(), false);
     for (std::size_t c = 0; c < poly.cycles.size(); ++c) {
       if (poly.cycles[c].size() < 3) continue;  // degenerate: both orientations at once

@@ -53,44 +53,46 @@ template <Kernel K>
 void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::sweep) {
   auto& ea = arr.polygon[0].edges;
   auto& eb = arr.polygon[1].edges;
-  std::vector<SweepItem> items;
-  items.reserve(ea.size() + eb.size());
-  for (int g = 0; g < 2; ++g) {
-    const PreparedPolygon& poly = arr.polygon[g];
-    for (std::size_t c = 0; c + 1 < poly.cycle_first_edge.size(); ++c) {
-      for (int e = poly.cycle_first_edge[c]; e < poly.cycle_first_edge[c + 1]; ++e) {
-        items.push_back(sweep_item(poly.edges[e].src, poly.edges[e].dst, g, e > poly.cycle_first_edge[c]));
-      }
-    }
-  }
-  const int na = static_cast<int>(ea.size());
   std::array<EdgeInsertions, 2> inserted;  // per polygon, by edge index
-  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
-  const auto& pts = arr.points;
-  for_each_candidate_pair<K>(pts, arr.x_rank, items, true, search, [&](int i, int j) {
-    if (i > j) std::swap(i, j);  // i indexes A, j indexes B
-    const int jb = j - na;
-    const Edge& a = ea[i];
-    const Edge& b = eb[jb];
-    if (items[i].lo == items[j].lo && items[i].hi == items[j].hi) return;  // shared_edge
-    const auto rel = relate_segments_by_id<K>(pts, a.src, a.dst, b.src, b.dst);
-    if (rel.proper_crossing) {
-      const auto key = std::make_pair(segment_key(a.src, a.dst), segment_key(b.src, b.dst));
-      auto [it, fresh] = crossing_id.try_emplace(key, arr.num_vertices());
-      if (fresh) {
-        arr.crossings.push_back(K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst]));
-        if constexpr (!K::is_exact) check_finite_crossing<K>(arr, a, b);
+  {  // the sweep's items are released before the fragments are built, which reuse their memory
+    std::vector<SweepItem> items;
+    items.reserve(ea.size() + eb.size());
+    for (int g = 0; g < 2; ++g) {
+      const PreparedPolygon& poly = arr.polygon[g];
+      for (std::size_t c = 0; c + 1 < poly.cycle_first_edge.size(); ++c) {
+        for (int e = poly.cycle_first_edge[c]; e < poly.cycle_first_edge[c + 1]; ++e) {
+          items.push_back(sweep_item(poly.edges[e].src, poly.edges[e].dst, g, e > poly.cycle_first_edge[c]));
+        }
       }
-      inserted[0].add(i, it->second);
-      inserted[1].add(jb, it->second);
-      return;
     }
-    // vertex_on_edge and collinear_overlap: endpoints strictly inside the other edge.
-    if (rel.c_inside_ab) inserted[0].add(i, b.src);
-    if (rel.d_inside_ab) inserted[0].add(i, b.dst);
-    if (rel.a_inside_cd) inserted[1].add(jb, a.src);
-    if (rel.b_inside_cd) inserted[1].add(jb, a.dst);
-  });
+    const int na = static_cast<int>(ea.size());
+    std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
+    const auto& pts = arr.points;
+    for_each_candidate_pair<K>(pts, arr.x_rank, items, true, search, [&](int i, int j) {
+      if (i > j) std::swap(i, j);  // i indexes A, j indexes B
+      const int jb = j - na;
+      const Edge& a = ea[i];
+      const Edge& b = eb[jb];
+      if (items[i].lo == items[j].lo && items[i].hi == items[j].hi) return;  // shared_edge
+      const auto rel = relate_segments_by_id<K>(pts, a.src, a.dst, b.src, b.dst);
+      if (rel.proper_crossing) {
+        const auto key = std::make_pair(segment_key(a.src, a.dst), segment_key(b.src, b.dst));
+        auto [it, fresh] = crossing_id.try_emplace(key, arr.num_vertices());
+        if (fresh) {
+          arr.crossings.push_back(K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst]));
+          if constexpr (!K::is_exact) check_finite_crossing<K>(arr, a, b);
+        }
+        inserted[0].add(i, it->second);
+        inserted[1].add(jb, it->second);
+        return;
+      }
+      // vertex_on_edge and collinear_overlap: endpoints strictly inside the other edge.
+      if (rel.c_inside_ab) inserted[0].add(i, b.src);
+      if (rel.d_inside_ab) inserted[0].add(i, b.dst);
+      if (rel.a_inside_cd) inserted[1].add(jb, a.src);
+      if (rel.b_inside_cd) inserted[1].add(jb, a.dst);
+    });
+  }
 
   for (int g = 0; g < 2; ++g) {
     PreparedPolygon& poly = arr.polygon[g];

@@ -25,10 +25,7 @@ struct Classification {
 
 template <Kernel K>
 WindingLocator<K> make_locator(const Arrangement<K>& arr, const PreparedPolygon& x, std::size_t queries) {
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(x.edges.size());
-  for (const auto& e : x.edges) edges.push_back({e.src, e.dst});
-  return WindingLocator<K>(arr, std::move(edges), queries);
+  return WindingLocator<K>(arr, x.edges, queries);
 }
 
 namespace detail {

@@ -105,6 +105,7 @@ SelectedFragments select_fragments(const Arrangement<K>& arr, const Classificati
   for (int p = 0; p < 2; ++p) {
     const PreparedPolygon& poly = arr.polygon[p];
     const int q = 1 - p;
+    out.batch[p].reserve(poly.fragments.size());  // pages are touched only as entries are added
     for (const Fragment& f : poly.fragments) {
       const bool own_left = f.far_left[p] > 0;
       const bool own_right = f.far_right[p] > 0;

@@ -94,16 +94,15 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
     out.push_back(std::move(cycle));
   };
 
-  std::vector<EfEntry*> starts;
-  ef.for_each([&](EfEntry& e) { starts.push_back(&e); });
-  for (EfEntry* start : starts) {
-    if (!start->alive) continue;
-    start->alive = false;
-    path_vertices.assign({start->from, start->to});
-    path_dirs.assign({start->dir});
-    position[start->from] = 0;
-    if (start->to == start->from) throw KernelFailure("degenerate fragment");
-    position[start->to] = 1;
+  // Every walk starts from the first fragment still unused, in EF's insertion order.
+  ef.for_each([&](EfEntry& start) {
+    if (!start.alive) return;  // used by an earlier walk of this loop
+    start.alive = false;
+    path_vertices.assign({start.from, start.to});
+    path_dirs.assign({start.dir});
+    position[start.from] = 0;
+    if (start.to == start.from) throw KernelFailure("degenerate fragment");
+    position[start.to] = 1;
     while (path_vertices.size() > 1) {  // ends when a cycle closes at the start vertex
       const int v = path_vertices.back();
       EfEntry* next = choose_next(v, path_dirs.back());
@@ -120,7 +119,7 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
       }
     }
     position[path_vertices[0]] = -1;
-  }
+  });
   return out;
 }
 

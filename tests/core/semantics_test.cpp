@@ -12,15 +12,17 @@ namespace {
 constexpr Operation kOps[] = {Operation::intersection, Operation::union_, Operation::difference,
                               Operation::symmetric_difference};
 
-std::vector<QPoint> sample_points(const BooleanResult<RationalKernel>& r, std::mt19937_64& rng) {
+// The sample points: every vertex, the midpoint of every edge fragment (their ends as the
+// trace hook saw them after step 4: the result keeps vertices, not fragments), and random
+// grid points.
+std::vector<QPoint> sample_points(const BooleanResult<RationalKernel>& r,
+                                  const std::vector<std::pair<int, int>>& fragment_ends, std::mt19937_64& rng) {
   std::vector<QPoint> s;
   for (int v = 0; v < r.arrangement.num_vertices(); ++v) s.push_back(r.vertex(v));
-  for (const auto& poly : r.arrangement.polygon) {
-    for (const auto& f : poly.fragments) {
-      const auto& a = r.vertex(f.from);
-      const auto& b = r.vertex(f.to);
-      s.push_back({(a.x + b.x) / 2, (a.y + b.y) / 2});
-    }
+  for (const auto& [from, to] : fragment_ends) {
+    const auto& a = r.vertex(from);
+    const auto& b = r.vertex(to);
+    s.push_back({(a.x + b.x) / 2, (a.y + b.y) / 2});
   }
   std::uniform_int_distribution<int> grid(-8, 60);
   for (int i = 0; i < 60; ++i) {
@@ -51,14 +53,22 @@ TEST(Semantics, PointMembershipOnRandomGridPairs) {
       for (const bool regular : {true, false}) {
         for (const auto ef : {EfOrganisation::hash, EfOrganisation::sorted}) {
           BooleanResult<RationalKernel> r;
+          std::vector<std::pair<int, int>> fragment_ends;
+          const TraceHook<RationalKernel> keep_fragments = [&](Step step, const Arrangement<RationalKernel>& arr) {
+            if (step != Step::classified) return;
+            for (const auto& poly : arr.polygon) {
+              for (const auto& f : poly.fragments) fragment_ends.push_back({f.from, f.to});
+            }
+          };
           try {
-            r = boolean_op<RationalKernel>(a, b, Options{op, regular, ef, PairSearch::sweep});
+            r = boolean_op<RationalKernel>(a, b, Options{op, regular, ef, PairSearch::sweep}, keep_fragments);
           } catch (const InvalidInput&) {
             ++skipped;  // the generator made a polygon with crossing rings
             goto next_pair;
           }
           ++cases;
-          for (const QPoint& p : sample_points(r, rng)) {
+          EXPECT_FALSE(fragment_ends.empty());
+          for (const QPoint& p : sample_points(r, fragment_ends, rng)) {
             const Location la = locate(qa, a.type, p);
             const Location lb = locate(qb, b.type, p);
             const Location lr = locate(r, p);
