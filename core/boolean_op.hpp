@@ -75,10 +75,22 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   Classification cls = classify_fragments(arr);  // step 4
   hook(Step::classified, arr);
   SelectedFragments selected = select_fragments(arr, cls, opt.op, opt.regular);  // step 5
+  // Only non-regular output looks at the rays again (isolated points): release them before
+  // EF is built, so that EF takes their memory.
+  if (opt.regular) {
+    for (RayTable& rays : cls.rays) rays = RayTable();
+  }
   const auto build = [&](auto& ef) {
-    for (auto& batch : selected.batch) {
-      ef.insert_batch(std::move(batch), opt.regular);
-      std::vector<EfEntry>().swap(batch);
+    using Table = std::decay_t<decltype(ef)>;
+    for (int p = 0; p < 2; ++p) {
+      if constexpr (std::is_same_v<Table, SortedEdgeTable>) {
+        std::vector<EfEntry> batch;  // the sorted organisation takes A's, then B's batch
+        batch.reserve(selected.entries);
+        for_each_selected_entry(arr, selected, p, [&](const EfEntry& e) { batch.push_back(e); });
+        ef.insert_batch(std::move(batch), opt.regular);
+      } else {
+        for_each_selected_entry(arr, selected, p, [&](const EfEntry& e) { ef.insert(e, opt.regular); });
+      }
     }
     std::vector<int> isolated;
     if (!opt.regular) {
@@ -90,16 +102,16 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
     // Step 6 needs EF and the vertices only: the per-edge data of steps 2-5 is released
     // first, so that step 6's arrays reuse its memory instead of growing the heap.
     for (RayTable& rays : cls.rays) rays = RayTable();
+    for (auto& of : selected.of) std::vector<Selection>().swap(of);
     release_fragments(arr);
     res.cycles = construct_result_cycles(arr, ef, opt.op);  // step 6
     for (const int v : isolated) res.cycles.push_back({{v}, {}, PolygonType::island, true});
   };
-  const std::size_t capacity = selected.batch[0].size() + selected.batch[1].size();
   if (opt.ef == EfOrganisation::sorted) {
-    SortedEdgeTable ef(capacity);
+    SortedEdgeTable ef(selected.entries);
     build(ef);
   } else {
-    HashEdgeTable ef(capacity);
+    HashEdgeTable ef(selected.entries);
     build(ef);
   }
   hook(Step::constructed, arr);

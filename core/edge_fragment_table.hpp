@@ -116,6 +116,7 @@ class HashEdgeTable {
     for (const auto& e : batch) insert(e, regular);
   }
 
+  // InsertEF of one fragment; batches make no difference to a hash table.
   void insert(EfEntry e, bool regular) {
     e.alive = true;
     if (find(e.from, e.to)) return;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -141,6 +142,77 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
   }
 }
 
+// A maximal stretch of one ring whose points come in lexicographic order when read from
+// `pos` towards `end` (exclusive) in steps of `step` (+1 or -1).
+template <class P>
+struct PointRun {
+  const P* ring = nullptr;
+  int ring_ref = 0;  // input number of the ring's first point (see number_points_by_runs)
+  int pos = 0;
+  int end = 0;
+  int step = 1;
+  const P& point() const { return ring[pos]; }
+};
+
+// Numbers the distinct input points of A and B in lexicographic order by merging the rings'
+// monotone runs, which are few on smooth or convex rings (a ring has at least two): each
+// point then costs about log2(runs) comparisons instead of a sort's log2(n). Fills `points`
+// (distinct, sorted) and id_of (input number, counted polygon after polygon and ring after
+// ring -> id). Returns false, having done nothing, when there are more than `max_runs` runs.
+template <Kernel K>
+bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point>*, 2>& in, std::size_t max_runs,
+                           std::vector<typename K::Point>& points, std::vector<int>& id_of) {
+  using P = typename K::Point;
+  const auto less = [](const P& u, const P& w) { return compare_xy<K>(u, w) == Sign::negative; };
+  // The runs, kept as a binary min-heap on their current points.
+  std::vector<PointRun<P>> heap;
+  int ref = 0;
+  for (const auto* poly : in) {
+    for (const auto& ring : poly->rings) {
+      const int n = static_cast<int>(ring.size());
+      for (int i = 0; i < n;) {
+        int j = i + 1;
+        if (j < n && less(ring[j], ring[i])) {
+          while (j < n && less(ring[j], ring[j - 1])) ++j;
+          heap.push_back({ring.data(), ref, j - 1, i - 1, -1});
+        } else {
+          while (j < n && !less(ring[j], ring[j - 1])) ++j;
+          heap.push_back({ring.data(), ref, i, j, +1});
+        }
+        if (heap.size() > max_runs) return false;
+        i = j;
+      }
+      ref += n;
+    }
+  }
+  const auto sift_down = [&](std::size_t i) {
+    const std::size_t n = heap.size();
+    while (true) {
+      std::size_t least = i;
+      const std::size_t l = 2 * i + 1;
+      if (l < n && less(heap[l].point(), heap[least].point())) least = l;
+      if (l + 1 < n && less(heap[l + 1].point(), heap[least].point())) least = l + 1;
+      if (least == i) return;
+      std::swap(heap[i], heap[least]);
+      i = least;
+    }
+  };
+  for (std::size_t i = heap.size() / 2; i-- > 0;) sift_down(i);
+  while (!heap.empty()) {
+    PointRun<P>& run = heap.front();
+    const P& q = run.point();
+    if (points.empty() || compare_xy<K>(points.back(), q) != Sign::zero) points.push_back(q);
+    id_of[run.ring_ref + run.pos] = static_cast<int>(points.size()) - 1;
+    run.pos += run.step;
+    if (run.pos == run.end) {
+      heap.front() = heap.back();
+      heap.pop_back();
+    }
+    if (!heap.empty()) sift_down(0);
+  }
+  return true;
+}
+
 }  // namespace detail
 
 // Gives every distinct input point of A and B an id in lexicographic order, makes both
@@ -154,26 +226,29 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
   for (const auto* poly : in) {
     for (const auto& ring : poly->rings) total += ring.size();
   }
-  // Sort the points themselves (not indices into the rings): this runs on every vertex.
-  // The second member numbers the vertices polygon after polygon, ring after ring.
-  std::vector<std::pair<typename K::Point, int>> sorted;
-  sorted.reserve(total);
-  for (const auto* poly : in) {
-    for (const auto& ring : poly->rings) {
-      for (const auto& q : ring) sorted.emplace_back(q, static_cast<int>(sorted.size()));
-    }
-  }
-  std::sort(sorted.begin(), sorted.end(),
-            [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; });
   std::vector<int> id_of(total);
   arr.points.reserve(total);
-  for (std::size_t k = 0; k < sorted.size(); ++k) {
-    if (k == 0 || compare_xy<K>(sorted[k - 1].first, sorted[k].first) != Sign::zero) {
-      arr.points.push_back(sorted[k].first);
+  // Rings of smooth or convex shapes consist of a few long monotone runs, merged directly;
+  // otherwise the points themselves (not indices into the rings) are sorted. The second
+  // member numbers the vertices polygon after polygon, ring after ring.
+  constexpr std::size_t max_runs = 32;
+  if (!detail::number_points_by_runs<K>(in, max_runs, arr.points, id_of)) {
+    std::vector<std::pair<typename K::Point, int>> sorted;
+    sorted.reserve(total);
+    for (const auto* poly : in) {
+      for (const auto& ring : poly->rings) {
+        for (const auto& q : ring) sorted.emplace_back(q, static_cast<int>(sorted.size()));
+      }
     }
-    id_of[sorted[k].second] = static_cast<int>(arr.points.size()) - 1;
+    std::sort(sorted.begin(), sorted.end(),
+              [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; });
+    for (std::size_t k = 0; k < sorted.size(); ++k) {
+      if (k == 0 || compare_xy<K>(sorted[k - 1].first, sorted[k].first) != Sign::zero) {
+        arr.points.push_back(sorted[k].first);
+      }
+      id_of[sorted[k].second] = static_cast<int>(arr.points.size()) - 1;
+    }
   }
-  std::vector<std::pair<typename K::Point, int>>().swap(sorted);  // its memory serves the rings
   arr.x_rank.resize(arr.points.size());
   for (std::size_t i = 0; i < arr.points.size(); ++i) {
     arr.x_rank[i] = i == 0 ? 0 : arr.x_rank[i - 1] + (K::compare_x(arr.points[i - 1], arr.points[i]) != Sign::zero);

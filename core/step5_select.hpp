@@ -91,9 +91,11 @@ constexpr Selection select_by_tables(Operation op, bool regular, PolygonType ta,
   return Selection::none;
 }
 
-// The selected fragments of A and of B, in the form EF takes them.
+// What step 5 keeps of each fragment of A and of B (one byte per fragment), and how many EF
+// entries that makes.
 struct SelectedFragments {
-  std::array<std::vector<EfEntry>, 2> batch;
+  std::array<std::vector<Selection>, 2> of;
+  std::size_t entries = 0;
 };
 
 template <Kernel K>
@@ -105,7 +107,7 @@ SelectedFragments select_fragments(const Arrangement<K>& arr, const Classificati
   for (int p = 0; p < 2; ++p) {
     const PreparedPolygon& poly = arr.polygon[p];
     const int q = 1 - p;
-    out.batch[p].reserve(poly.fragments.size());  // pages are touched only as entries are added
+    out.of[p].reserve(poly.fragments.size());
     for (const Fragment& f : poly.fragments) {
       const bool own_left = f.far_left[p] > 0;
       const bool own_right = f.far_right[p] > 0;
@@ -130,15 +132,27 @@ SelectedFragments select_fragments(const Arrangement<K>& arr, const Classificati
                                   p == 0 || same + opposite > 0, p == 1 || same + opposite > 0};
         s = select_by_set_operation(op, regular, ta, sides);
       }
-      const Edge& e = poly.edges[f.edge];
-      const Direction dir{e.src, e.dst};
-      if (s == Selection::as_is || s == Selection::both) out.batch[p].push_back({f.from, f.to, dir, true});
-      if (s == Selection::reversed || s == Selection::both) {
-        out.batch[p].push_back({f.to, f.from, dir.reversed(), true});
-      }
+      out.of[p].push_back(s);
+      out.entries += s == Selection::none ? 0 : (s == Selection::both ? 2 : 1);
     }
   }
   return out;
+}
+
+// Calls insert(EfEntry) for the EF entries of polygon p's selected fragments, in fragment
+// order: the fragment itself, its reverse, or both.
+template <Kernel K, class F>
+void for_each_selected_entry(const Arrangement<K>& arr, const SelectedFragments& selected, int p, F&& insert) {
+  const PreparedPolygon& poly = arr.polygon[p];
+  for (std::size_t i = 0; i < poly.fragments.size(); ++i) {
+    const Selection s = selected.of[p][i];
+    if (s == Selection::none) continue;
+    const Fragment& f = poly.fragments[i];
+    const Edge& e = poly.edges[f.edge];
+    const Direction dir{e.src, e.dst};
+    if (s == Selection::as_is || s == Selection::both) insert(EfEntry{f.from, f.to, dir, true});
+    if (s == Selection::reversed || s == Selection::both) insert(EfEntry{f.to, f.from, dir.reversed(), true});
+  }
 }
 
 // Isolated points of the non-regular result [MK89 §3.2: degenerate single-point fragments

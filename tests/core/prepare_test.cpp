@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <iostream>
+#include <random>
 #include <vector>
 
 #include "arithmetic/kernels/exact_kernel.hpp"
@@ -98,6 +100,66 @@ TEST(Prepare, SeveralPointsOnOneEdgeAreInsertedInOrderAlongIt) {
   EXPECT_TRUE(follows(*outer, id(4, 4), id(3, 4)));
   EXPECT_TRUE(follows(*outer, id(3, 4), id(1, 4)));
   EXPECT_TRUE(follows(*outer, id(1, 4), id(0, 4)));
+}
+
+// The numbering by merged monotone runs equals numbering by a plain sort: the same distinct
+// points in lexicographic order, and every input vertex mapped to its point. Inputs mix
+// ascending and descending runs, repeated points (within a ring, across rings and across
+// polygons), equal x with different y, and -0 next to +0.
+TEST(Prepare, NumberingByMergedRunsEqualsNumberingBySort) {
+  using K = ExactKernel;
+  const std::uint64_t seed = 20261123;
+  std::cout << "seed " << seed << "\n";
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> coord(-6, 6);
+  std::uniform_int_distribution<int> len(1, 12);
+  std::uniform_int_distribution<int> rings(1, 3);
+  for (int iter = 0; iter < 500; ++iter) {
+    std::array<Polygon, 2> poly;
+    std::vector<Point> flat;
+    for (auto& p : poly) {
+      for (int r = rings(rng); r > 0; --r) {
+        Ring ring;
+        for (int k = len(rng); k > 0; --k) {
+          const double x = coord(rng) / 2.0;
+          ring.push_back({x == 0 && (rng() & 1) ? -0.0 : x, static_cast<double>(coord(rng))});
+        }
+        // Sort some rings into long runs, ascending or descending.
+        if (rng() % 3 == 0) {
+          std::sort(ring.begin(), ring.end(), [](const Point& u, const Point& w) {
+            return compare_xy<K>(u, w) == Sign::negative;
+          });
+          if (rng() & 1) std::reverse(ring.begin(), ring.end());
+        }
+        flat.insert(flat.end(), ring.begin(), ring.end());
+        p.rings.push_back(std::move(ring));
+      }
+    }
+    std::vector<Point> expected = flat;
+    std::sort(expected.begin(), expected.end(),
+              [](const Point& u, const Point& w) { return compare_xy<K>(u, w) == Sign::negative; });
+    expected.erase(std::unique(expected.begin(), expected.end(),
+                               [](const Point& u, const Point& w) { return compare_xy<K>(u, w) == Sign::zero; }),
+                   expected.end());
+    std::vector<Point> points;
+    std::vector<int> id_of(flat.size(), -1);
+    const std::array<const Polygon*, 2> in{&poly[0], &poly[1]};
+    ASSERT_TRUE(detail::number_points_by_runs<K>(in, 1000, points, id_of));
+    ASSERT_EQ(points.size(), expected.size()) << "iter " << iter;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      EXPECT_EQ(compare_xy<K>(points[i], expected[i]), Sign::zero) << "iter " << iter << " point " << i;
+    }
+    for (std::size_t k = 0; k < flat.size(); ++k) {
+      ASSERT_GE(id_of[k], 0) << "iter " << iter << " vertex " << k;
+      EXPECT_EQ(compare_xy<K>(points[id_of[k]], flat[k]), Sign::zero) << "iter " << iter << " vertex " << k;
+    }
+    // With too few runs allowed it declines and leaves its outputs alone.
+    std::vector<Point> untouched;
+    std::vector<int> ids(flat.size(), -1);
+    EXPECT_FALSE(detail::number_points_by_runs<K>(in, 0, untouched, ids));
+    EXPECT_TRUE(untouched.empty());
+    EXPECT_TRUE(std::all_of(ids.begin(), ids.end(), [](int v) { return v == -1; }));
+  }
 }
 
 }  // namespace
