@@ -9,8 +9,10 @@
 // (absolute difference when the exact area is 0). The label names the reference kernel.
 // Benchmarks measure speed; the area difference is reported as data, never asserted.
 #include <benchmark/benchmark.h>
+#include <malloc.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <functional>
 #include <initializer_list>
@@ -85,6 +87,7 @@ constexpr SizeLimit kSizeLimits[] = {
 constexpr std::string_view kRepeatedAtLargest[] = {"GEOS", "BoostGeometry", "Clipper", "mkbool:exact"};
 
 bool full_run = false;  // --overlay_full
+bool default_malloc = false;  // --overlay_default_malloc
 
 bool within_limits(std::string_view runner, WorkloadKind kind, std::size_t n) {
   if (full_run) return true;
@@ -349,6 +352,9 @@ void register_benchmarks() {
           if (measured_once(r.name, kind, n)) {
             b->Iterations(1)->Repetitions(1);
           } else {
+            // Every runner gets the same warm-up before its first measured repetition (caches,
+            // lazily built tables, the allocator's free lists).
+            b->MinWarmUpTime(0.05);
             b->MinTime(0.1);
           }
         }
@@ -367,12 +373,26 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--overlay_full") == 0) {
       mk::bench::full_run = true;
+    } else if (std::strcmp(argv[i], "--overlay_default_malloc") == 0) {
+      mk::bench::default_malloc = true;
     } else {
       argv[kept++] = argv[i];
     }
   }
   argc = kept;
+  // The same allocator setting for every library in this process: glibc keeps freed memory
+  // instead of returning it to the kernel (no mmap for large blocks, no trimming), so that
+  // repeated runs measure computation rather than first-touch page faults, which cost about
+  // 8 us each on the VM these figures come from (README, "Peers"). --overlay_default_malloc
+  // measures with glibc's defaults instead.
+  if (!mk::bench::default_malloc) {
+    if (mallopt(M_MMAP_MAX, 0) != 1 || mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max()) != 1) {
+      std::fprintf(stderr, "bench_overlay: mallopt failed\n");
+      return 1;
+    }
+  }
   benchmark::Initialize(&argc, argv);
+  benchmark::AddCustomContext("malloc", mk::bench::default_malloc ? "glibc default" : "no mmap, no trim");
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   mk::bench::register_benchmarks();
   benchmark::RunSpecifiedBenchmarks();

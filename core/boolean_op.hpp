@@ -111,7 +111,7 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
     SortedEdgeTable ef(selected.entries);
     build(ef);
   } else {
-    HashEdgeTable ef(selected.entries);
+    HashEdgeTable ef(selected.entries, arr.num_vertices());
     build(ef);
   }
   hook(Step::constructed, arr);

@@ -98,18 +98,17 @@ class SortedEdgeTable {
   std::vector<EfEntry> pending_;
 };
 
-// [MK89 §3.3, second method] Linear open addressing keyed by the fragment's first vertex.
-// The entries live in one array in insertion order; a slot holds an entry's index + 1
-// (0 = empty), so the table costs 4 bytes per slot at load factor at most 1/2. Deletion
-// clears `alive` and leaves the slot occupied, so probe sequences stay intact.
+// [MK89 §3.3, second method] Hashing on the fragment's first vertex. Vertex ids are dense
+// (0 .. num_vertices - 1), so the hash function is the identity into num_vertices buckets,
+// each a chain of entries in insertion order: no collisions between vertices, and the
+// buckets of the consecutive vertices of a walk (near ids, as ids follow lexicographic
+// order) lie near each other in memory. 4 bytes per vertex and 4 per entry beside the
+// entries. Deletion clears `alive` and leaves the entry in its chain.
 class HashEdgeTable {
  public:
-  explicit HashEdgeTable(std::size_t capacity) {
-    std::size_t size = 16;
-    while (size < 2 * capacity + 2) size *= 2;
-    slots_.assign(size, 0);
-    mask_ = size - 1;
+  HashEdgeTable(std::size_t capacity, int num_vertices) : head_(static_cast<std::size_t>(num_vertices), -1) {
     entries_.reserve(capacity);
+    next_.reserve(capacity);
   }
 
   void insert_batch(const std::vector<EfEntry>& batch, bool regular) {
@@ -126,17 +125,19 @@ class HashEdgeTable {
         return;
       }
     }
-    std::size_t i = hash(e.from);
-    while (slots_[i] != 0) i = (i + 1) & mask_;
+    const int index = static_cast<int>(entries_.size());
     entries_.push_back(e);
-    slots_[i] = static_cast<std::uint32_t>(entries_.size());
+    next_.push_back(-1);
+    int* link = &head_[static_cast<std::size_t>(e.from)];
+    while (*link >= 0) link = &next_[static_cast<std::size_t>(*link)];
+    *link = index;
   }
 
   template <class F>
   void for_each_from(int v, F&& f) {
-    for (std::size_t i = hash(v); slots_[i] != 0; i = (i + 1) & mask_) {
-      EfEntry& en = entries_[slots_[i] - 1];
-      if (en.from == v && en.alive) f(en);
+    for (int i = head_[static_cast<std::size_t>(v)]; i >= 0; i = next_[static_cast<std::size_t>(i)]) {
+      EfEntry& en = entries_[static_cast<std::size_t>(i)];
+      if (en.alive) f(en);
     }
   }
   template <class F>
@@ -147,19 +148,16 @@ class HashEdgeTable {
   }
 
  private:
-  std::size_t hash(int v) const {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)) * 0x9E3779B97F4A7C15ULL >> 17) & mask_;
-  }
   EfEntry* find(int from, int to) {
-    for (std::size_t i = hash(from); slots_[i] != 0; i = (i + 1) & mask_) {
-      EfEntry& en = entries_[slots_[i] - 1];
-      if (en.from == from && en.to == to && en.alive) return &en;
+    for (int i = head_[static_cast<std::size_t>(from)]; i >= 0; i = next_[static_cast<std::size_t>(i)]) {
+      EfEntry& en = entries_[static_cast<std::size_t>(i)];
+      if (en.to == to && en.alive) return &en;
     }
     return nullptr;
   }
-  std::vector<std::uint32_t> slots_;
+  std::vector<int> head_;         // per vertex: its first entry, or -1
+  std::vector<int> next_;         // per entry: the next entry from the same vertex, or -1
   std::vector<EfEntry> entries_;  // insertion order, for a deterministic walk
-  std::size_t mask_ = 0;
 };
 
 }  // namespace mk

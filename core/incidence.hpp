@@ -74,6 +74,7 @@ class RayTable {
     Iterator end() const { return e; }
     bool empty() const { return b == e; }
   };
+  int count(int v) const { return begin_[v + 1] - begin_[v]; }
   Span at(int v) const {
     return {{poly_, codes_.data() + begin_[v]}, {poly_, codes_.data() + begin_[v + 1]}};
   }

@@ -120,16 +120,27 @@ void for_each_candidate_pair(const std::vector<typename K::Point>& pts, const st
     const int b_max = b_up ? b.hi : b.lo;
     return !y_less(b_max, a_min) && !y_less(a_max, b_min);
   };
+  // The segments of chain x that can meet chain `other`: a chain is monotone in x and in y,
+  // so those ending left of other's start, and those entirely below or above other's
+  // y-range, form a prefix and a suffix of x's segments (in x order), found by binary search.
+  const auto window = [&](const detail::Chain& x, const detail::Chain& other) {
+    const auto first = order.begin() + x.first;
+    const auto last = order.begin() + x.last;
+    auto b = std::partition_point(first, last, [&](int k) { return xr(items[k].hi) < xr(other.lo); });
+    auto e = std::partition_point(b, last, [&](int k) { return xr(items[k].lo) <= xr(other.hi); });
+    if (y_less(x.hi, x.lo)) {  // descending in y: a segment spans y(hi) .. y(lo)
+      b = std::partition_point(b, e, [&](int k) { return y_less(other.y_max, items[k].hi); });
+      e = std::partition_point(b, e, [&](int k) { return !y_less(items[k].lo, other.y_min); });
+    } else {  // ascending (or level): a segment spans y(lo) .. y(hi)
+      b = std::partition_point(b, e, [&](int k) { return y_less(items[k].hi, other.y_min); });
+      e = std::partition_point(b, e, [&](int k) { return !y_less(other.y_max, items[k].lo); });
+    }
+    return std::pair<int, int>(static_cast<int>(b - order.begin()), static_cast<int>(e - order.begin()));
+  };
   const auto merge = [&](const detail::Chain& c, const detail::Chain& d) {
-    // Skip the segments of each chain that end left of the other chain's start.
-    const auto skip = [&](const detail::Chain& x, int left) {
-      return static_cast<int>(std::partition_point(order.begin() + x.first, order.begin() + x.last,
-                                                   [&](int k) { return xr(items[k].hi) < left; }) -
-                              order.begin());
-    };
-    int i = skip(c, xr(d.lo));
-    int j = skip(d, xr(c.lo));
-    while (i < c.last && j < d.last) {
+    auto [i, c_end] = window(c, d);
+    auto [j, d_end] = window(d, c);
+    while (i < c_end && j < d_end) {
       const SweepItem& a = items[order[i]];
       const SweepItem& b = items[order[j]];
       if (xr(a.hi) < xr(b.lo)) {
@@ -141,7 +152,7 @@ void for_each_candidate_pair(const std::vector<typename K::Point>& pts, const st
         continue;
       }
       // a overlaps b in x: so may a the segments after b that start before a ends.
-      for (int k = j; k < d.last && xr(items[order[k]].lo) <= xr(a.hi); ++k) {
+      for (int k = j; k < d_end && xr(items[order[k]].lo) <= xr(a.hi); ++k) {
         if (y_overlap(a, items[order[k]])) f(order[i], order[k]);
       }
       ++i;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/arrangement.hpp"
@@ -45,12 +46,23 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
   // [MK89 §4.3 step 1] One located point per ring: just left of its first fragment.
   const int anchor = x_locator.winding(e0.src, e0.dst, Side::left);
   int left = anchor;
+  // At a vertex where only the ring's own two fragments meet (count 2 in its own ray table),
+  // those two rays are known without reading them: the fragment arriving and the one leaving.
+  const bool own = &x == &p;
   for (int i = first; i < last; ++i) {
     Fragment& f = p.fragments[i];
-    const auto [same, opposite] = fragments_along(x, x_rays, f.from, f.to);
+    const Fragment& next = p.fragments[i + 1 < last ? i + 1 : first];
+    int same = 0;
+    int opposite = 0;
+    if (own && x_rays.count(f.from) == 2) {
+      same = 1;  // f itself; the other ray is the previous fragment arriving
+      opposite = p.fragments[i > first ? i - 1 : last - 1].from == f.to ? 1 : 0;
+    } else {
+      std::tie(same, opposite) = fragments_along(x, x_rays, f.from, f.to);
+    }
     f.far_left[xi] = x.far_sign * left;
     f.far_right[xi] = x.far_sign * (left - (same - opposite));
-    const Fragment& next = p.fragments[i + 1 < last ? i + 1 : first];
+    if (own && x_rays.count(f.to) == 2) continue;  // just f and next: nothing in between
     const Edge& ein = p.edges[f.edge];
     const Edge& eout = p.edges[next.edge];
     const Direction back{ein.dst, ein.src};
