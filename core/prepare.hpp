@@ -9,6 +9,7 @@
 #include <array>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/arrangement.hpp"
@@ -29,8 +30,18 @@ struct IdRing {
 
 // Splits a closed sequence of point ids at repeated vertices into cycles with distinct
 // vertices: every closed polyline is a union of irreducible polygons [MK89 §2.2].
-inline void split_into_cycles(const IdRing& ring, int ring_index, std::vector<int>& where,
-                              PreparedPolygon& out) {
+inline void split_into_cycles(IdRing&& ring, int ring_index, std::vector<int>& where, PreparedPolygon& out) {
+  const std::size_t n = ring.ids.size();
+  if (n >= 2) {  // the common case first: no vertex repeats, and the ring is one cycle
+    std::size_t k = 0;
+    for (; k < n && where[ring.ids[k]] < 0; ++k) where[ring.ids[k]] = 0;
+    for (std::size_t i = 0; i < k; ++i) where[ring.ids[i]] = -1;
+    if (k == n) {
+      out.origins.push_back({ring_index, ring.input_index[0]});
+      out.cycles.push_back(std::move(ring.ids));
+      return;
+    }
+  }
   std::vector<int> stack;
   std::vector<int> stack_input;
   const auto emit = [&](std::size_t from) {
@@ -45,7 +56,6 @@ inline void split_into_cycles(const IdRing& ring, int ring_index, std::vector<in
     stack.resize(from + 1);
     stack_input.resize(from + 1);
   };
-  const std::size_t n = ring.ids.size();
   for (std::size_t k = 0; k <= n; ++k) {
     const int id = ring.ids[k % n];
     if (where[id] >= 0) {
@@ -146,12 +156,13 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
 // `pos` towards `end` (exclusive) in steps of `step` (+1 or -1).
 template <class P>
 struct PointRun {
+  P key;  // ring[pos], kept beside the run so that comparing runs reads no other memory
   const P* ring = nullptr;
   int ring_ref = 0;  // input number of the ring's first point (see number_points_by_runs)
   int pos = 0;
   int end = 0;
   int step = 1;
-  const P& point() const { return ring[pos]; }
+  const P& point() const { return key; }
 };
 
 // Numbers the distinct input points of A and B in lexicographic order by merging the rings'
@@ -174,10 +185,10 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
         int j = i + 1;
         if (j < n && less(ring[j], ring[i])) {
           while (j < n && less(ring[j], ring[j - 1])) ++j;
-          heap.push_back({ring.data(), ref, j - 1, i - 1, -1});
+          heap.push_back({ring[j - 1], ring.data(), ref, j - 1, i - 1, -1});
         } else {
           while (j < n && !less(ring[j], ring[j - 1])) ++j;
-          heap.push_back({ring.data(), ref, i, j, +1});
+          heap.push_back({ring[i], ring.data(), ref, i, j, +1});
         }
         if (heap.size() > max_runs) return false;
         i = j;
@@ -200,13 +211,14 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
   for (std::size_t i = heap.size() / 2; i-- > 0;) sift_down(i);
   while (!heap.empty()) {
     PointRun<P>& run = heap.front();
-    const P& q = run.point();
-    if (points.empty() || compare_xy<K>(points.back(), q) != Sign::zero) points.push_back(q);
+    if (points.empty() || compare_xy<K>(points.back(), run.key) != Sign::zero) points.push_back(run.key);
     id_of[run.ring_ref + run.pos] = static_cast<int>(points.size()) - 1;
     run.pos += run.step;
     if (run.pos == run.end) {
-      heap.front() = heap.back();
+      heap.front() = std::move(heap.back());
       heap.pop_back();
+    } else {
+      run.key = run.ring[run.pos];
     }
     if (!heap.empty()) sift_down(0);
   }
@@ -279,7 +291,7 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
     detail::make_vertex_complete<K>(arr.points, arr.x_rank, rings, p == 0 ? "A" : "B", search);
     for (std::size_t r = 0; r < rings.size(); ++r) {
       if (rings[r].ids.empty()) continue;
-      detail::split_into_cycles(rings[r], static_cast<int>(r), where, out);
+      detail::split_into_cycles(std::move(rings[r]), static_cast<int>(r), where, out);
     }
   }
   return arr;
