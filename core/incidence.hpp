@@ -4,6 +4,7 @@
 // Preconditions: step 3 done.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/arrangement.hpp"
@@ -23,6 +24,9 @@ struct Ray {
 // The rays of one polygon's fragments, grouped by vertex. A ray is stored as one int
 // (2 fragment + 1 when it arrives) and expanded into a Ray when read: the table costs
 // 4 bytes per vertex and 8 per fragment, and is built without a second per-vertex array.
+// A bit per vertex says whether the polygon reaches it at all: most queries are about the
+// other polygon's vertices, which it does not reach, and the bits (1/32 of the groups'
+// size) answer them from cache.
 // The polygon must outlive the table and keep its fragments and edges in place.
 class RayTable {
  public:
@@ -35,10 +39,12 @@ class RayTable {
       ++begin_[f.from];
       ++begin_[f.to];
     }
+    reached_.assign(static_cast<std::size_t>(num_vertices) / 64 + 1, 0);
     int total = 0;
-    for (int& b : begin_) {
-      total += b;
-      b = total;
+    for (std::size_t v = 0; v < begin_.size(); ++v) {
+      reached_[v / 64] |= static_cast<std::uint64_t>(begin_[v] > 0) << (v % 64);
+      total += begin_[v];
+      begin_[v] = total;
     }
     codes_.resize(static_cast<std::size_t>(total));
     for (int i = static_cast<int>(poly.fragments.size()) - 1; i >= 0; --i) {
@@ -74,6 +80,7 @@ class RayTable {
     Iterator end() const { return e; }
     bool empty() const { return b == e; }
   };
+  bool reaches(int v) const { return (reached_[static_cast<std::size_t>(v) / 64] >> (v % 64)) & 1; }
   int count(int v) const { return begin_[v + 1] - begin_[v]; }
   Span at(int v) const {
     return {{poly_, codes_.data() + begin_[v]}, {poly_, codes_.data() + begin_[v + 1]}};
@@ -83,6 +90,7 @@ class RayTable {
   const PreparedPolygon* poly_ = nullptr;
   std::vector<int> begin_;
   std::vector<int> codes_;
+  std::vector<std::uint64_t> reached_;  // bit v: v has rays
 };
 
 // Fragments of polygon x lying on u -> w: (same direction, opposite direction), found among
@@ -90,6 +98,7 @@ class RayTable {
 inline std::pair<int, int> fragments_along(const PreparedPolygon& x, const RayTable& x_rays, int u, int w) {
   int same = 0;
   int opposite = 0;
+  if (!x_rays.reaches(u)) return {0, 0};
   for (const Ray& r : x_rays.at(u)) {
     const Fragment& f = x.fragments[r.fragment];
     if (r.sign > 0 && f.to == w) ++same;

@@ -62,7 +62,7 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
     }
     f.far_left[xi] = x.far_sign * left;
     f.far_right[xi] = x.far_sign * (left - (same - opposite));
-    if (own && x_rays.count(f.to) == 2) continue;  // just f and next: nothing in between
+    if (own ? x_rays.count(f.to) == 2 : !x_rays.reaches(f.to)) continue;  // no ray between f and next
     const Edge& ein = p.edges[f.edge];
     const Edge& eout = p.edges[next.edge];
     const Direction back{ein.dst, ein.src};
