@@ -60,6 +60,9 @@ inline constexpr double bound_a_floor = 0x1p-1022;
 //    2^-904 * 2^-103 when non-zero: normal too;
 //  - |x_k| <= 2^501, products <= 2^1003, and the 16 components of the exact stage sum to
 //    at most 2^1008 in absolute value: no overflow.
+// The products are Dekker's (expansion.hpp, two_product_split), whose preconditions follow:
+// every factor is an x_k or t_k, a multiple of 2^-452 (so of 2^-511) of magnitude at most
+// 2^501 <= 2^996, and every product is at most 2^1003 <= 2^1021.
 // Inputs outside the range are scaled by a power of two into it when their magnitudes span
 // less than safe_max / safe_min (scaling by 2^k is exact for normal results and keeps the
 // sign), else decided with GMP.

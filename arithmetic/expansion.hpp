@@ -64,6 +64,41 @@ inline TwoTerm two_product(double a, double b) {
   return {hi, std::fma(a, b, -hi)};
 }
 
+// [Sh97 Thm 17] Veltkamp's split: a = hi + lo exactly, hi and lo each fitting in 26
+// significant bits (the sign supplies the 27th), so that products of parts are exact.
+// Precondition: |a| <= 2^996 (the scaled value (2^27 + 1) a stays finite).
+struct Split {
+  double hi;
+  double lo;
+};
+constexpr Split split(double a) {
+  const double c = 134217729.0 * a;  // 2^27 + 1
+  const double a_big = c - a;
+  const double hi = c - a_big;
+  return {hi, a - hi};
+}
+
+// [Sh97 Thm 18] a * b exactly as hi + lo by Dekker's method: the product of the split parts
+// with every step exact. Same result as two_product, in plain operations: without a
+// hardware fma at compile time (the portable build), std::fma is a call into libm, which
+// costs more than these 17 operations and forces the caller to spill its registers.
+// Preconditions: |a|, |b| <= 2^996 and |a b| <= 2^1021, so that no step overflows (the
+// parts exceed a, b by a factor of at most 1 + 2^-26); a and b are integer multiples of
+// 2^-511, so that every part, product of parts and partial sum is a multiple of 2^-1022:
+// each non-zero intermediate is then normal, no step underflows, and Shewchuk's proof,
+// which assumes no underflow, applies. (A multiple of g = 2^-k rounds to a multiple of g;
+// adaptive_bounds.hpp uses the same fact.) The expansion stages of adaptive.hpp meet both
+// on their scaled inputs; tests/arithmetic/expansion_test.cpp checks the edges.
+constexpr TwoTerm two_product_split(double a, double b) {
+  const double hi = a * b;
+  const Split as = split(a);
+  const Split bs = split(b);
+  const double err1 = hi - as.hi * bs.hi;
+  const double err2 = err1 - as.lo * bs.hi;
+  const double err3 = err2 - as.hi * bs.lo;
+  return {hi, as.lo * bs.lo - err3};
+}
+
 // [Sh97 §2.7] (a1 + a0) - (b1 + b0) as a four-component expansion, least significant first.
 // Built from two grow steps: subtract b0, then b1, each with a chain of two-sums.
 inline std::array<double, 4> two_two_diff(double a1, double a0, double b1, double b0) {

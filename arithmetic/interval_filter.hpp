@@ -44,8 +44,11 @@ namespace mk::interval_filter {
 //   (floor - eta (1 + C/(1 + u))) (1 - u) / (1 + u) >= (2 theta + 2 (1 + u)^2) eta.  (S2)
 // (S1): the right side is 6u + 12u^2 + O(u^3), the left (6 + 40u)u (1 - 4u + ...) =
 // 6u + 16u^2 + O(u^3). tests/arithmetic/bounds_test.cpp checks (S1) and (S2) in exact
-// rational arithmetic. Without range tests the filter costs three operations more than
-// the naive formula's sign (two absolute values and a max, beside the bound itself).
+// rational arithmetic. Without range tests the filter costs, beside the naive formula,
+// four absolute values, two maxima and the bound itself: in scalar form about twice the
+// floating-point operations of the naive sign, which in a loop bound by floating-point
+// throughput measured 1.5-1.7x the naive predicate. cross_sign below therefore evaluates the
+// x and y halves as two-lane vectors (see Pair).
 inline constexpr double semi_static_bound = (6.0 + 40.0 * 0x1p-53) * 0x1p-53;
 inline constexpr double semi_static_floor = 0x1p-1022;
 
@@ -96,15 +99,32 @@ inline int interval_sign(double p1x, double p1y, double q1x, double q1y, double 
   return gmp::cross_sign(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y);
 }
 
+// Two doubles in one register (SSE2 on x86-64, NEON on AArch64), through the GCC/Clang
+// vector extension: +, -, * act lane by lane with the rounding of the scalar operation, so
+// a formula evaluated on pairs gives bit for bit the scalar results, two at a time.
+typedef double Pair __attribute__((vector_size(16)));
+typedef long long PairBits __attribute__((vector_size(16)));
+
+inline Pair abs_lanes(Pair v) {
+  const PairBits magnitude_bits{0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
+  return reinterpret_cast<Pair>(reinterpret_cast<PairBits>(v) & magnitude_bits);
+}
+
+// The filter on pairs: a point's coordinates are adjacent in memory, so (x1, x3) = q1 - p1
+// and (x4, x2) = q2 - p2 are one vector subtraction each; one product gives (l, r), and one
+// absolute value and one maximum per pair give (max(|x1|, |x4|), max(|x3|, |x2|)). Every
+// lane computes exactly the scalar value the derivation above names (x_k, l, r, det, m, e).
 inline int cross_sign(double p1x, double p1y, double q1x, double q1y, double p2x, double p2y,
                       double q2x, double q2y, PredicateKind kind) {
   PredicateCounters::count(PredicateMethod::interval, kind, PredicateStage::filter);
-  const double x1 = q1x - p1x;
-  const double x2 = q2y - p2y;
-  const double x3 = q1y - p1y;
-  const double x4 = q2x - p2x;
-  const double det = x1 * x2 - x3 * x4;  // formula::cross_of_differences, operation by operation
-  const double m = std::max(std::fabs(x1), std::fabs(x4)) * std::max(std::fabs(x2), std::fabs(x3));
+  const Pair x1_x3 = Pair{q1x, q1y} - Pair{p1x, p1y};
+  const Pair x4_x2 = Pair{q2x, q2y} - Pair{p2x, p2y};
+  const Pair l_r = x1_x3 * Pair{x4_x2[1], x4_x2[0]};
+  const double det = l_r[0] - l_r[1];  // formula::cross_of_differences, operation by operation
+  const Pair a = abs_lanes(x1_x3);
+  const Pair b = abs_lanes(x4_x2);
+  const Pair largest = a > b ? a : b;  // lane-wise max
+  const double m = largest[0] * largest[1];
   const double bound = semi_static_bound * m + semi_static_floor;  // (S1), (S2)
   if (det > bound) return 1;
   if (-det > bound) return -1;

@@ -97,7 +97,8 @@ TEST(arith_counters, collinear_input_reaches_the_expected_stages) {
   EXPECT_EQ(reached(interval, PredicateStage::interval), 100u);
   EXPECT_EQ(reached(interval, PredicateStage::gmp), 0u);
 
-  // Inexact differences (points of different binades on y = x/3): stages C and exact.
+  // Inexact differences (points of different binades on y = x/3), each axis within 2^69:
+  // the exact stage decides in fixed point, without stages C or GMP.
   PredicateCounters::reset();
   std::mt19937_64 rng(4002);
   for (int k = 0; k < 1000; ++k) {
@@ -108,10 +109,24 @@ TEST(arith_counters, collinear_input_reaches_the_expected_stages) {
     EXPECT_EQ(mk::interval_filter::orient2d(3 * a, a, 3 * b, b, 3 * c, c), 0);
   }
   print("collinear, inexact differences");
+  EXPECT_EQ(reached(adaptive, PredicateStage::expansion_c), 0u);
+  EXPECT_GT(reached(adaptive, PredicateStage::expansion_exact), 900u);
+  EXPECT_EQ(reached(adaptive, PredicateStage::gmp), 0u);
+  EXPECT_GT(reached(interval, PredicateStage::gmp), 0u);
+
+  // The same with axes spanning up to 2^100: too wide for fixed point, so stages C and the
+  // exact expansion stage.
+  PredicateCounters::reset();
+  for (int k = 0; k < 1000; ++k) {
+    const double a = mk::test::random_short_double(rng, 45, -50, 50);
+    const double b = mk::test::random_short_double(rng, 45, -50, 50);
+    const double c = mk::test::random_short_double(rng, 45, -50, 50);
+    EXPECT_EQ(mk::adaptive::orient2d(3 * a, a, 3 * b, b, 3 * c, c), 0);
+  }
+  print("collinear, inexact differences, wide axes");
   EXPECT_GT(reached(adaptive, PredicateStage::expansion_c), 0u);
   EXPECT_GT(reached(adaptive, PredicateStage::expansion_exact), 0u);
   EXPECT_EQ(reached(adaptive, PredicateStage::gmp), 0u);
-  EXPECT_GT(reached(interval, PredicateStage::gmp), 0u);
 
   // Magnitudes too far apart for expansions: GMP.
   PredicateCounters::reset();

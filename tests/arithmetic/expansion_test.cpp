@@ -66,6 +66,52 @@ TEST(arith_expansion, error_free_transformations_are_exact) {
   }
 }
 
+// Dekker's product within its documented range: operands that are multiples of 2^-511,
+// at most 2^996, with a product at most 2^1021. Random operands over the whole range, then
+// the corners: the smallest operands (full 53-bit mantissas ending at 2^-511, so the error
+// term ends at 2^-1022), the largest operand against factors that keep the product below
+// 2^1021, and operands whose split parts round up (mantissas of all ones).
+TEST(arith_expansion, two_product_split_is_exact_in_its_range) {
+  std::mt19937_64 rng(seed + 10);
+  auto check = [](double a, double b) {
+    const auto p = ex::two_product_split(a, b);
+    ASSERT_EQ(p.hi, a * b) << hex(a) << " " << hex(b);
+    ASSERT_EQ(exact(p.hi) + exact(p.lo), exact(a) * exact(b)) << hex(a) << " " << hex(b);
+  };
+  // A random multiple of 2^-511 with up to 53 significant bits and magnitude in
+  // [2^e_min, 2^(e_max + 1)).
+  auto operand = [&](int e_min, int e_max) {
+    const double v = random_double(rng, e_min, e_max);
+    const double grid = std::ldexp(1.0, -511);
+    return std::trunc(v / grid) * grid;
+  };
+  for (int k = 0; k < 300000; ++k) {
+    const double a = operand(-511, 995);
+    const double b = operand(-511, 995);
+    if (std::fabs(a * b) <= std::ldexp(1.0, 1021)) check(a, b);
+    if (std::fabs(a * a) <= std::ldexp(1.0, 1021)) check(a, a);
+  }
+  const double all_ones = std::ldexp(1.0, 53) - 1.0;  // 53 set bits
+  const std::array<double, 6> low{std::ldexp(all_ones, -511), std::ldexp(1.0, -511), std::ldexp(all_ones - 2, -511),
+                                  std::ldexp(3.0, -511), std::ldexp(all_ones, -480), std::ldexp(0x1.5555555555555p0, -458)};
+  const std::array<double, 5> high{std::ldexp(1.0, 996), std::ldexp(all_ones, 943), std::ldexp(all_ones, 900),
+                                   std::ldexp(0x1.fffffffp0, 995), std::ldexp(0x1.0000001p0, 995)};
+  for (const double a : low) {
+    for (const double b : low) {
+      check(a, b);
+      check(-a, b);
+    }
+    for (const double b : high) check(a, -b);
+  }
+  for (const double a : high) {
+    for (const double b : {std::ldexp(all_ones, -28), std::ldexp(1.0, 25), std::ldexp(all_ones, 20), 0.75, -1.0}) {
+      if (std::fabs(a * b) <= std::ldexp(1.0, 1021)) check(a, b);
+    }
+  }
+  check(0.0, std::ldexp(1.0, 996));
+  check(-0.0, std::ldexp(all_ones, -511));
+}
+
 TEST(arith_expansion, sums_of_subnormals_are_exact) {
   // Addition never loses bits below 2^-1022, so two_sum stays exact there.
   std::mt19937_64 rng(seed + 1);
