@@ -74,23 +74,15 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   hook(Step::intersections, arr);
   Classification cls = classify_fragments(arr);  // step 4
   hook(Step::classified, arr);
-  SelectedFragments selected = select_fragments(arr, cls, opt.op, opt.regular);  // step 5
-  // Only non-regular output looks at the rays again (isolated points): release them before
-  // EF is built, so that EF takes their memory.
-  if (opt.regular) {
-    for (RayTable& rays : cls.rays) rays = RayTable();
-  }
+  // Step 5 streams the selected fragments into EF: A's, then B's.
   const auto build = [&](auto& ef) {
     using Table = std::decay_t<decltype(ef)>;
-    for (int p = 0; p < 2; ++p) {
-      if constexpr (std::is_same_v<Table, SortedEdgeTable>) {
-        std::vector<EfEntry> batch;  // the sorted organisation takes A's, then B's batch
-        batch.reserve(selected.entries);
-        for_each_selected_entry(arr, selected, p, [&](const EfEntry& e) { batch.push_back(e); });
-        ef.insert_batch(std::move(batch), opt.regular);
-      } else {
-        for_each_selected_entry(arr, selected, p, [&](const EfEntry& e) { ef.insert(e, opt.regular); });
-      }
+    if constexpr (std::is_same_v<Table, SortedEdgeTable>) {
+      std::array<std::vector<EfEntry>, 2> batch;  // the sorted organisation takes A's, then B's batch
+      select_fragments(arr, cls, opt.op, opt.regular, [&](int p, const EfEntry& e) { batch[p].push_back(e); });
+      for (auto& b : batch) ef.insert_batch(std::move(b), opt.regular);
+    } else {
+      select_fragments(arr, cls, opt.op, opt.regular, [&](int, const EfEntry& e) { ef.insert(e, opt.regular); });
     }
     std::vector<int> isolated;
     if (!opt.regular) {
@@ -102,16 +94,16 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
     // Step 6 needs EF and the vertices only: the per-edge data of steps 2-5 is released
     // first, so that step 6's arrays reuse its memory instead of growing the heap.
     for (RayTable& rays : cls.rays) rays = RayTable();
-    for (auto& of : selected.of) std::vector<Selection>().swap(of);
     release_fragments(arr);
     res.cycles = construct_result_cycles(arr, ef, opt.op);  // step 6
     for (const int v : isolated) res.cycles.push_back({{v}, {}, PolygonType::island, true});
   };
   if (opt.ef == EfOrganisation::sorted) {
-    SortedEdgeTable ef(selected.entries);
+    SortedEdgeTable ef(0);
     build(ef);
   } else {
-    HashEdgeTable ef(selected.entries, arr.num_vertices());
+    // Each fragment makes at most one entry in regular output, and rarely two otherwise.
+    HashEdgeTable ef(arr.polygon[0].fragments.size() + arr.polygon[1].fragments.size(), arr.num_vertices());
     build(ef);
   }
   hook(Step::constructed, arr);

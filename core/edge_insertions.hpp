@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <climits>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -24,6 +25,9 @@ class EdgeInsertions {
     std::sort(list_.begin(), list_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     next_ = 0;
   }
+
+  // The smallest edge not taken yet that has insertions, or INT_MAX.
+  int next_edge() const { return next_ < list_.size() ? list_[next_].first : INT_MAX; }
 
   // True when an edge below `end` that has not been taken has insertions.
   bool any_before(int end) const { return next_ < list_.size() && list_[next_].first < end; }

@@ -98,13 +98,19 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
     PreparedPolygon& poly = arr.polygon[g];
     EdgeInsertions& ins = inserted[g];
     ins.group();
-    poly.fragments.clear();
+    std::vector<Fragment> fragments;  // a local vector: its end stays in a register
+    fragments.reserve(poly.edges.size() + ins.size());
     poly.cycle_first_fragment.assign(1, 0);
-    poly.fragments.reserve(poly.edges.size() + ins.size());
     poly.cycle_first_fragment.reserve(poly.cycle_first_edge.size());
     std::vector<int> on_edge;
     for (std::size_t c = 0; c + 1 < poly.cycle_first_edge.size(); ++c) {
-      for (int e = poly.cycle_first_edge[c]; e < poly.cycle_first_edge[c + 1]; ++e) {
+      const int end = poly.cycle_first_edge[c + 1];
+      for (int e = poly.cycle_first_edge[c]; e < end; ++e) {
+        // Edges without insertions, the common case, are one fragment each.
+        for (const int plain_end = std::min(end, ins.next_edge()); e < plain_end; ++e) {
+          fragments.push_back({poly.edges[e].src, poly.edges[e].dst, e, {}, {}});
+        }
+        if (e == end) break;
         const Edge& edge = poly.edges[e];
         int from = edge.src;
         if (ins.take(e, on_edge)) {
@@ -115,14 +121,15 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
           });
           on_edge.erase(std::unique(on_edge.begin(), on_edge.end()), on_edge.end());
           for (const int id : on_edge) {
-            poly.fragments.push_back({from, id, e, {}, {}});
+            fragments.push_back({from, id, e, {}, {}});
             from = id;
           }
         }
-        poly.fragments.push_back({from, edge.dst, e, {}, {}});
+        fragments.push_back({from, edge.dst, e, {}, {}});
       }
-      poly.cycle_first_fragment.push_back(static_cast<int>(poly.fragments.size()));
+      poly.cycle_first_fragment.push_back(static_cast<int>(fragments.size()));
     }
+    poly.fragments = std::move(fragments);
   }
 }
 

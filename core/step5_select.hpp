@@ -91,23 +91,27 @@ constexpr Selection select_by_tables(Operation op, bool regular, PolygonType ta,
   return Selection::none;
 }
 
-// What step 5 keeps of each fragment of A and of B (one byte per fragment), and how many EF
-// entries that makes.
-struct SelectedFragments {
-  std::array<std::vector<Selection>, 2> of;
-  std::size_t entries = 0;
-};
+// The EF entries of fragment f of a polygon, given what step 5 keeps of it: the fragment
+// itself, its reverse, or both.
+template <class F>
+void for_each_entry_of(const PreparedPolygon& poly, const Fragment& f, Selection s, F&& insert) {
+  if (s == Selection::none) return;
+  const Edge& e = poly.edges[f.edge];
+  const Direction dir{e.src, e.dst};
+  if (s == Selection::as_is || s == Selection::both) insert(EfEntry{f.from, f.to, dir, true});
+  if (s == Selection::reversed || s == Selection::both) insert(EfEntry{f.to, f.from, dir.reversed(), true});
+}
 
-template <Kernel K>
-SelectedFragments select_fragments(const Arrangement<K>& arr, const Classification& cls, Operation op,
-                                   bool regular) {
-  SelectedFragments out;
+// Step 5: decides what the result keeps of every fragment of A, then of B, and calls
+// insert(p, EfEntry) (p = 0 for A's fragments, 1 for B's) for the entries that makes,
+// fragment by fragment [MK89 §3.1 step 5].
+template <Kernel K, class F>
+void select_fragments(const Arrangement<K>& arr, const Classification& cls, Operation op, bool regular, F&& insert) {
   const PolygonType ta = arr.polygon[0].type;
   const PolygonType tb = arr.polygon[1].type;
   for (int p = 0; p < 2; ++p) {
     const PreparedPolygon& poly = arr.polygon[p];
     const int q = 1 - p;
-    out.of[p].reserve(poly.fragments.size());
     for (const Fragment& f : poly.fragments) {
       const bool own_left = f.far_left[p] > 0;
       const bool own_right = f.far_right[p] > 0;
@@ -132,26 +136,8 @@ SelectedFragments select_fragments(const Arrangement<K>& arr, const Classificati
                                   p == 0 || same + opposite > 0, p == 1 || same + opposite > 0};
         s = select_by_set_operation(op, regular, ta, sides);
       }
-      out.of[p].push_back(s);
-      out.entries += s == Selection::none ? 0 : (s == Selection::both ? 2 : 1);
+      for_each_entry_of(poly, f, s, [&](const EfEntry& e) { insert(p, e); });
     }
-  }
-  return out;
-}
-
-// Calls insert(EfEntry) for the EF entries of polygon p's selected fragments, in fragment
-// order: the fragment itself, its reverse, or both.
-template <Kernel K, class F>
-void for_each_selected_entry(const Arrangement<K>& arr, const SelectedFragments& selected, int p, F&& insert) {
-  const PreparedPolygon& poly = arr.polygon[p];
-  for (std::size_t i = 0; i < poly.fragments.size(); ++i) {
-    const Selection s = selected.of[p][i];
-    if (s == Selection::none) continue;
-    const Fragment& f = poly.fragments[i];
-    const Edge& e = poly.edges[f.edge];
-    const Direction dir{e.src, e.dst};
-    if (s == Selection::as_is || s == Selection::both) insert(EfEntry{f.from, f.to, dir, true});
-    if (s == Selection::reversed || s == Selection::both) insert(EfEntry{f.to, f.from, dir.reversed(), true});
   }
 }
 
