@@ -1,5 +1,5 @@
 // The edge-fragment table EF in both organisations of the paper: a sorted table searched by
-// binary search, and an open-addressing hash table. [MK89 §3.3]
+// binary search, and a hash table (buckets by vertex id). [MK89 §3.3]
 // Preconditions: vertices are keyed by identity (vertex id), not by coordinates: an
 // exact-arithmetic deviation recorded in paper-notes.md.
 #pragma once
