@@ -162,7 +162,6 @@ struct PointRun {
   int pos = 0;
   int end = 0;
   int step = 1;
-  const P& point() const { return key; }
 };
 
 // Numbers the distinct input points of A and B in lexicographic order by merging the rings'
@@ -175,8 +174,7 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
                            std::vector<typename K::Point>& points, std::vector<int>& id_of) {
   using P = typename K::Point;
   const auto less = [](const P& u, const P& w) { return compare_xy<K>(u, w) == Sign::negative; };
-  // The runs, kept as a binary min-heap on their current points.
-  std::vector<PointRun<P>> heap;
+  std::vector<PointRun<P>> runs;
   int ref = 0;
   for (const auto* poly : in) {
     for (const auto& ring : poly->rings) {
@@ -185,42 +183,46 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
         int j = i + 1;
         if (j < n && less(ring[j], ring[i])) {
           while (j < n && less(ring[j], ring[j - 1])) ++j;
-          heap.push_back({ring[j - 1], ring.data(), ref, j - 1, i - 1, -1});
+          runs.push_back({ring[j - 1], ring.data(), ref, j - 1, i - 1, -1});
         } else {
           while (j < n && !less(ring[j], ring[j - 1])) ++j;
-          heap.push_back({ring[i], ring.data(), ref, i, j, +1});
+          runs.push_back({ring[i], ring.data(), ref, i, j, +1});
         }
-        if (heap.size() > max_runs) return false;
+        if (runs.size() > max_runs) return false;
         i = j;
       }
       ref += n;
     }
   }
+  // A binary min-heap of run indices keyed by the runs' current points; sifting moves
+  // 4-byte indices into a hole instead of swapping runs.
+  std::vector<int> order(runs.size());
+  std::iota(order.begin(), order.end(), 0);
   const auto sift_down = [&](std::size_t i) {
-    const std::size_t n = heap.size();
-    while (true) {
-      std::size_t least = i;
-      const std::size_t l = 2 * i + 1;
-      if (l < n && less(heap[l].point(), heap[least].point())) least = l;
-      if (l + 1 < n && less(heap[l + 1].point(), heap[least].point())) least = l + 1;
-      if (least == i) return;
-      std::swap(heap[i], heap[least]);
-      i = least;
+    const std::size_t n = order.size();
+    const int moving = order[i];
+    const P& key = runs[moving].key;
+    for (std::size_t l = 2 * i + 1; l < n; l = 2 * i + 1) {
+      const std::size_t c = l + 1 < n && less(runs[order[l + 1]].key, runs[order[l]].key) ? l + 1 : l;
+      if (!less(runs[order[c]].key, key)) break;
+      order[i] = order[c];
+      i = c;
     }
+    order[i] = moving;
   };
-  for (std::size_t i = heap.size() / 2; i-- > 0;) sift_down(i);
-  while (!heap.empty()) {
-    PointRun<P>& run = heap.front();
+  for (std::size_t i = order.size() / 2; i-- > 0;) sift_down(i);
+  while (!order.empty()) {
+    PointRun<P>& run = runs[order.front()];
     if (points.empty() || compare_xy<K>(points.back(), run.key) != Sign::zero) points.push_back(run.key);
     id_of[run.ring_ref + run.pos] = static_cast<int>(points.size()) - 1;
     run.pos += run.step;
     if (run.pos == run.end) {
-      heap.front() = std::move(heap.back());
-      heap.pop_back();
+      order.front() = order.back();
+      order.pop_back();
     } else {
       run.key = run.ring[run.pos];
     }
-    if (!heap.empty()) sift_down(0);
+    if (!order.empty()) sift_down(0);
   }
   return true;
 }
