@@ -20,7 +20,6 @@ namespace mk {
 struct Edge {
   int src = -1;
   int dst = -1;
-  int cycle = -1;
 };
 
 // An edge fragment [MK89 §3.1 step 4]: the piece of `edge` between two consecutive vertices

@@ -99,7 +99,7 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
     for (const int v : isolated) res.cycles.push_back({{v}, {}, PolygonType::island, true});
   };
   if (opt.ef == EfOrganisation::sorted) {
-    SortedEdgeTable ef(0);
+    SortedEdgeTable ef;
     build(ef);
   } else {
     // Each fragment makes at most one entry in regular output, and rarely two otherwise.

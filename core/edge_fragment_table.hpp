@@ -26,8 +26,6 @@ struct EfEntry {
 // checked against the sorted table by binary search, then the table is sorted again.
 class SortedEdgeTable {
  public:
-  explicit SortedEdgeTable(std::size_t /*capacity*/) {}
-
   // InsertEF over a batch: a fragment already present is not inserted again; in regular
   // mode a fragment whose opposite is present deletes it and is not inserted.
   void insert_batch(std::vector<EfEntry> batch, bool regular) {
@@ -111,26 +109,24 @@ class HashEdgeTable {
     next_.reserve(capacity);
   }
 
-  void insert_batch(const std::vector<EfEntry>& batch, bool regular) {
-    for (const auto& e : batch) insert(e, regular);
-  }
-
-  // InsertEF of one fragment; batches make no difference to a hash table.
+  // InsertEF of one fragment; batches make no difference to a hash table. One walk along
+  // e.from's chain both finds a copy of e and reaches the chain's end, where e is linked.
   void insert(EfEntry e, bool regular) {
     e.alive = true;
-    if (find(e.from, e.to)) return;
+    int* link = &head_[static_cast<std::size_t>(e.from)];
+    for (; *link >= 0; link = &next_[static_cast<std::size_t>(*link)]) {
+      const EfEntry& en = entries_[static_cast<std::size_t>(*link)];
+      if (en.to == e.to && en.alive) return;
+    }
     if (regular) {
       if (EfEntry* opp = find(e.to, e.from)) {
         opp->alive = false;
         return;
       }
     }
-    const int index = static_cast<int>(entries_.size());
+    *link = static_cast<int>(entries_.size());
     entries_.push_back(e);
     next_.push_back(-1);
-    int* link = &head_[static_cast<std::size_t>(e.from)];
-    while (*link >= 0) link = &next_[static_cast<std::size_t>(*link)];
-    *link = index;
   }
 
   template <class F>

@@ -29,9 +29,6 @@ class EdgeInsertions {
   // The smallest edge not taken yet that has insertions, or INT_MAX.
   int next_edge() const { return next_ < list_.size() ? list_[next_].first : INT_MAX; }
 
-  // True when an edge below `end` that has not been taken has insertions.
-  bool any_before(int end) const { return next_ < list_.size() && list_[next_].first < end; }
-
   // Replaces `out` by the vertices inserted into `edge`, in no particular order and possibly
   // repeated; false when there are none. Edges below `edge` not taken are passed over.
   bool take(int edge, std::vector<int>& out) {

@@ -12,18 +12,28 @@
 
 namespace mk {
 
-// A fragment seen from one of its endpoints: the direction away from that endpoint (given
-// by the original edge's input points), +1 when the fragment leaves the vertex, -1 when it
-// arrives, and the fragment's index.
-struct Ray {
-  Direction dir;
-  int sign = 0;
-  int fragment = -1;
+// A fragment seen from one of its endpoints: the fragment's index, +1 when it leaves the
+// vertex and -1 when it arrives, and the direction away from the vertex (given by the
+// original edge's input points). Stored as one int, 2 fragment + 1 when it arrives; the
+// direction is looked up only when asked for.
+class Ray {
+ public:
+  Ray(const PreparedPolygon& poly, int code) : poly_(&poly), code_(code) {}
+  int fragment() const { return code_ >> 1; }
+  int sign() const { return (code_ & 1) != 0 ? -1 : 1; }
+  Direction dir() const {
+    const Edge& e = poly_->edges[poly_->fragments[fragment()].edge];
+    return (code_ & 1) != 0 ? Direction{e.dst, e.src} : Direction{e.src, e.dst};
+  }
+
+ private:
+  const PreparedPolygon* poly_;
+  int code_;
 };
 
-// The rays of one polygon's fragments, grouped by vertex. A ray is stored as one int
-// (2 fragment + 1 when it arrives) and expanded into a Ray when read: the table costs
-// 4 bytes per vertex and 8 per fragment, and is built without a second per-vertex array.
+// The rays of one polygon's fragments, grouped by vertex, each stored as its code: the
+// table costs 4 bytes per vertex and 8 per fragment, and is built without a second
+// per-vertex array.
 // A bit per vertex says whether the polygon reaches it at all: most queries are about the
 // other polygon's vertices, which it does not reach, and the bits (1/32 of the groups'
 // size) answer them from cache.
@@ -57,12 +67,7 @@ class RayTable {
   class Iterator {
    public:
     Iterator(const PreparedPolygon* poly, const int* code) : poly_(poly), code_(code) {}
-    Ray operator*() const {
-      const int i = *code_ >> 1;
-      const Edge& e = poly_->edges[poly_->fragments[i].edge];
-      if (*code_ & 1) return {{e.dst, e.src}, -1, i};
-      return {{e.src, e.dst}, +1, i};
-    }
+    Ray operator*() const { return {*poly_, *code_}; }
     Iterator& operator++() {
       ++code_;
       return *this;
@@ -100,9 +105,9 @@ inline std::pair<int, int> fragments_along(const PreparedPolygon& x, const RayTa
   int opposite = 0;
   if (!x_rays.reaches(u)) return {0, 0};
   for (const Ray& r : x_rays.at(u)) {
-    const Fragment& f = x.fragments[r.fragment];
-    if (r.sign > 0 && f.to == w) ++same;
-    if (r.sign < 0 && f.from == w) ++opposite;
+    const Fragment& f = x.fragments[r.fragment()];
+    if (r.sign() > 0 && f.to == w) ++same;
+    if (r.sign() < 0 && f.from == w) ++opposite;
   }
   return {same, opposite};
 }

@@ -125,7 +125,7 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
   for (auto& ring : rings) {
     if (ring.ids.size() < 2) continue;
     const int ring_end = e + static_cast<int>(ring.ids.size());
-    if (!inserted.any_before(ring_end)) {  // nothing inserted into this ring
+    if (inserted.next_edge() >= ring_end) {  // nothing inserted into this ring
       e = ring_end;
       continue;
     }
@@ -150,6 +150,14 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
     }
     ring = std::move(out);
   }
+}
+
+// Appends q to `points` (distinct, in lexicographic order so far, q not smaller than the
+// last) unless it equals the last, and returns q's id.
+template <Kernel K>
+int append_distinct(std::vector<typename K::Point>& points, const typename K::Point& q) {
+  if (points.empty() || compare_xy<K>(points.back(), q) != Sign::zero) points.push_back(q);
+  return static_cast<int>(points.size()) - 1;
 }
 
 // A maximal stretch of one ring whose points come in lexicographic order when read from
@@ -213,8 +221,7 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
   for (std::size_t i = order.size() / 2; i-- > 0;) sift_down(i);
   while (!order.empty()) {
     PointRun<P>& run = runs[order.front()];
-    if (points.empty() || compare_xy<K>(points.back(), run.key) != Sign::zero) points.push_back(run.key);
-    id_of[run.ring_ref + run.pos] = static_cast<int>(points.size()) - 1;
+    id_of[run.ring_ref + run.pos] = append_distinct<K>(points, run.key);
     run.pos += run.step;
     if (run.pos == run.end) {
       order.front() = order.back();
@@ -256,12 +263,7 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
     }
     std::sort(sorted.begin(), sorted.end(),
               [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; });
-    for (std::size_t k = 0; k < sorted.size(); ++k) {
-      if (k == 0 || compare_xy<K>(sorted[k - 1].first, sorted[k].first) != Sign::zero) {
-        arr.points.push_back(sorted[k].first);
-      }
-      id_of[sorted[k].second] = static_cast<int>(arr.points.size()) - 1;
-    }
+    for (const auto& [q, input] : sorted) id_of[input] = detail::append_distinct<K>(arr.points, q);
   }
   arr.x_rank.resize(arr.points.size());
   for (std::size_t i = 0; i < arr.points.size(); ++i) {

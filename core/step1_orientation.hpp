@@ -59,11 +59,10 @@ void normalize_orientations(Arrangement<K>& arr, Operation op) {
     std::unordered_map<std::uint64_t, int> edge_count;
     std::vector<Edge> edges;
     if (!single) {
-      for (int c = 0; c < static_cast<int>(poly.cycles.size()); ++c) {
-        const auto& cycle = poly.cycles[c];
+      for (const auto& cycle : poly.cycles) {
         for (std::size_t i = 0; i < cycle.size(); ++i) {
           ++edge_count[segment_key(cycle[i], cycle[(i + 1) % cycle.size()])];
-          edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()], c});
+          edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()]});
         }
       }
     }

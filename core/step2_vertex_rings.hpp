@@ -21,7 +21,7 @@ void build_vertex_rings(Arrangement<K>& arr) {
     for (int c = 0; c < static_cast<int>(poly.cycles.size()); ++c) {
       const auto& cycle = poly.cycles[c];
       for (std::size_t i = 0; i < cycle.size(); ++i) {
-        poly.edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()], c});
+        poly.edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()]});
       }
       poly.cycle_first_edge.push_back(static_cast<int>(poly.edges.size()));
     }

@@ -73,8 +73,9 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
     for (const Ray& r : x_rays.at(f.to)) {
       // A ray along `back` or `ahead` themselves lies on the sector's boundary, never
       // strictly inside: at the vertices of p's own ring no predicate is evaluated.
-      if (r.dir == back || r.dir == ahead) continue;
-      if (order.is_in_ccw_sector(ahead, back, r.dir)) delta += r.sign;
+      const Direction dir = r.dir();
+      if (dir == back || dir == ahead) continue;
+      if (order.is_in_ccw_sector(ahead, back, dir)) delta += r.sign();
     }
     left -= delta;
   }

@@ -171,7 +171,7 @@ std::vector<int> select_isolated_points(const Arrangement<K>& arr, const Classif
     bool has_faces = false;
     for (int p = 0; p < 2; ++p) {
       for (const Ray& r : cls.rays[p].at(v)) {
-        const Fragment& f = arr.polygon[p].fragments[r.fragment];
+        const Fragment& f = arr.polygon[p].fragments[r.fragment()];
         for (int side = 0; side < 2; ++side) {
           const bool in_a = is_in_region(ta, side == 0 ? f.far_left[0] : f.far_right[0]);
           const bool in_b = is_in_region(tb, side == 0 ? f.far_left[1] : f.far_right[1]);

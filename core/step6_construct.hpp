@@ -94,9 +94,9 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
     out.push_back(std::move(cycle));
   };
 
-  // Every walk starts from the first fragment still unused, in EF's insertion order.
+  // Every walk starts from the first fragment still unused, in EF's insertion order
+  // (for_each tests `alive` as it reaches each entry, after the earlier walks).
   ef.for_each([&](EfEntry& start) {
-    if (!start.alive) return;  // used by an earlier walk of this loop
     start.alive = false;
     path_vertices.assign({start.from, start.to});
     path_dirs.assign({start.dir});
