@@ -7,7 +7,7 @@
 //
 // ---- The shape -----------------------------------------------------------------------
 // Both predicates are the sign of D = X1 X2 - X3 X4, where each X_k = a_k - b_k is an exact
-// difference of two input doubles (predicates/formulas.hpp, cross_of_differences):
+// difference of two input doubles (arithmetic/formulas.hpp, cross_of_differences):
 //   X1 = q1x - p1x, X2 = q2y - p2y, X3 = q1y - p1y, X4 = q2x - p2x;
 // orient2d(a, b, c) is the case p1 = p2 = a, q1 = b, q2 = c. The program computes
 //   x_k = fl(X_k), t_k = X_k - x_k (exact tail), l = fl(x1 x2), r = fl(x3 x4),

@@ -1,4 +1,4 @@
-// Ground truth for the predicates on doubles: the formula of predicates/formulas.hpp
+// Ground truth for the predicates on doubles: the formula of arithmetic/formulas.hpp
 // evaluated in GMP rationals, which hold every finite double exactly. [MK89 §3.3] [Sh97]
 // Preconditions: finite inputs (mpq_set_d is exact for every finite double, subnormals
 // included; NaN and infinities are not numbers it can hold).
@@ -7,7 +7,7 @@
 
 #include <gmpxx.h>
 
-#include "predicates/formulas.hpp"
+#include "arithmetic/formulas.hpp"
 
 namespace mk::reference {
 

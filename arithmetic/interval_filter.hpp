@@ -16,7 +16,7 @@
 #include "arithmetic/predicates_counters.hpp"
 #include "arithmetic/predicates_gmp.hpp"
 #include "arithmetic/rounding_guard.hpp"
-#include "predicates/formulas.hpp"
+#include "arithmetic/formulas.hpp"
 
 namespace mk::interval_filter {
 

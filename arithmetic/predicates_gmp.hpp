@@ -1,5 +1,5 @@
 // The exact last stage shared by the adaptive and interval predicates: the formula of
-// predicates/formulas.hpp evaluated in GMP integers after scaling every input by one
+// arithmetic/formulas.hpp evaluated in GMP integers after scaling every input by one
 // power of two. [MK89 §3.3] (the paper's multiprecision fallback)
 // Preconditions: finite inputs. Exact for every finite double: subnormals, values near
 // DBL_MAX, and any mix of magnitudes (the integers grow to about 2100 bits at most).
@@ -13,7 +13,7 @@
 #include <cstddef>
 #include <cmath>
 
-#include "predicates/formulas.hpp"
+#include "arithmetic/formulas.hpp"
 
 namespace mk::gmp {
 

@@ -1,10 +1,10 @@
-// The naive predicates: the formula of predicates/formulas.hpp evaluated once in double.
+// The naive predicates: the formula of arithmetic/formulas.hpp evaluated once in double.
 // The baseline whose wrong signs the classroom grids count. [KMPSY08] [MK89 §3.3]
 // Preconditions: none; the result is a rounded guess, wrong near degeneracy, and
 // meaningless when intermediate results overflow or underflow.
 #pragma once
 
-#include "predicates/formulas.hpp"
+#include "arithmetic/formulas.hpp"
 
 namespace mk::naive {
 

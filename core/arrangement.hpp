@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/kernel.hpp"
+#include "kernel/kernel.hpp"
 #include "core/polygon.hpp"
 
 namespace mk {

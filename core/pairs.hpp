@@ -8,7 +8,7 @@
 #include <numeric>
 #include <vector>
 
-#include "core/kernel.hpp"
+#include "kernel/kernel.hpp"
 
 namespace mk {
 

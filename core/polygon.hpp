@@ -7,14 +7,9 @@
 #include <string_view>
 #include <vector>
 
-namespace mk {
+#include "kernel/point.hpp"
 
-// A point of the input: two finite doubles.
-struct Point {
-  double x = 0;
-  double y = 0;
-  friend bool operator==(const Point&, const Point&) = default;
-};
+namespace mk {
 
 // [MK89 §2.2] An island's region is FAR(P) plus its boundary; a hole's region is the
 // closure of the complement of FAR(P).

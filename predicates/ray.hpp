@@ -4,7 +4,7 @@
 // Preconditions: v != t.
 #pragma once
 
-#include "core/kernel.hpp"
+#include "kernel/kernel.hpp"
 #include "predicates/segments.hpp"
 
 namespace mk {

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "core/kernel.hpp"
+#include "kernel/kernel.hpp"
 
 namespace mk {
 

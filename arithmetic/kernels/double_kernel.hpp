@@ -8,9 +8,9 @@
 #include <string>
 #include <string_view>
 
-#include "core/kernel.hpp"
-#include "predicates/along.hpp"
-#include "predicates/formulas.hpp"
+#include "kernel/kernel.hpp"
+#include "arithmetic/along.hpp"
+#include "arithmetic/formulas.hpp"
 
 namespace mk {
 

@@ -18,7 +18,7 @@
 #include "arithmetic/interval_filter.hpp"
 #include "arithmetic/kernels/rational_kernel.hpp"
 #include "arithmetic/rounding_guard.hpp"
-#include "core/kernel.hpp"
+#include "kernel/kernel.hpp"
 
 namespace mk {
 

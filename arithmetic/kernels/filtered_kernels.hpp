@@ -10,9 +10,9 @@
 
 #include "arithmetic/adaptive.hpp"
 #include "arithmetic/interval_filter.hpp"
-#include "core/kernel.hpp"
-#include "predicates/along.hpp"
-#include "predicates/formulas.hpp"
+#include "kernel/kernel.hpp"
+#include "arithmetic/along.hpp"
+#include "arithmetic/formulas.hpp"
 
 namespace mk {
 

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "arithmetic/kernels/rational_kernel.hpp"
+
 namespace mk {
 
 inline double RationalKernel::to_nearest(const mpq_class& q) {

@@ -8,18 +8,10 @@
 #include <string>
 #include <string_view>
 
-#include "core/polygon.hpp"
+#include "kernel/point.hpp"
+#include "kernel/sign.hpp"
 
 namespace mk {
-
-enum class Sign : signed char { negative = -1, zero = 0, positive = 1 };
-
-constexpr Sign operator-(Sign s) { return static_cast<Sign>(-static_cast<int>(s)); }
-
-template <class T>
-constexpr Sign sign_of(const T& v) {
-  return v > 0 ? Sign::positive : (v < 0 ? Sign::negative : Sign::zero);
-}
 
 // A kernel is a compile-time policy. `Point` is an input vertex; `Vertex` is any vertex of
 // the arrangement: an input point or the crossing of two input segments (which a kernel

@@ -3,8 +3,7 @@
 // Preconditions: both vertices lie on the segment s -> d (up to the kernel's rounding).
 #pragma once
 
-#include "core/kernel.hpp"
-#include "predicates/segments.hpp"
+#include "kernel/kernel.hpp"
 
 namespace mk {
 
