@@ -11,6 +11,7 @@
 
 #include "kernel/kernel.hpp"
 #include "arithmetic/along.hpp"
+#include "arithmetic/nearest_double.hpp"
 #include "arithmetic/formulas.hpp"
 
 namespace mk {
@@ -60,11 +61,9 @@ struct RationalKernel {
     return {v.x.get_str(), v.y.get_str()};
   }
 
-  // The nearest double to a rational (ties to even), by exact comparison with the two
-  // neighbouring doubles of mpq's truncating conversion.
-  static double to_nearest(const mpq_class& q);
+  // The nearest double to a rational, ties to even, +-infinity beyond the double range
+  // (MPFR, arithmetic/nearest_double.hpp).
+  static double to_nearest(const mpq_class& q) { return nearest_double(q); }
 };
 
 }  // namespace mk
-
-#include "arithmetic/kernels/rational_rounding.hpp"
