@@ -18,23 +18,11 @@
 #endif
 #include "core/boolean_op.hpp"
 #include "core/to_output.hpp"
+#include "api/area.hpp"
 
 namespace mk {
 
 namespace {
-
-// The exact sum of many rationals, added pairwise in a balanced tree. Crossing points have
-// pairwise different denominators, so the sum's denominator grows with every term: adding
-// the terms one by one costs time quadratic in their number (minutes at 1e5 crossings),
-// the tree costs a logarithmic number of passes of GMP's subquadratic arithmetic.
-// Consumes the terms.
-mpq_class sum_balanced(std::vector<mpq_class>& terms) {
-  if (terms.empty()) return 0;
-  for (std::size_t width = 1; width < terms.size(); width *= 2) {
-    for (std::size_t i = 0; i + width < terms.size(); i += 2 * width) terms[i] += terms[i + width];
-  }
-  return std::move(terms[0]);
-}
 
 template <Kernel K>
 BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
@@ -48,48 +36,21 @@ BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
   const BooleanResult<K> r = boolean_op<K>(ka, kb, opt);
   const auto t1 = std::chrono::steady_clock::now();
   BooleanOutput out;
-  out.output = to_output<K, ExactKernel>(r);
+  out.output = to_output<K, ExactKernel>(r, o.exact_coordinates);
   out.stats.kernel = std::string(K::name);
   out.stats.op_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count();
   out.stats.vertices_in = r.stats.vertices_in;
   out.stats.crossings = r.stats.crossings;
   out.stats.vertices_out = r.stats.vertices_out;
-  if (o.area && !r.unbounded) {
-    // Shoelace per area cycle, islands adding and holes subtracting.
+  if (!r.unbounded) {
     if constexpr (K::is_exact) {
-      std::vector<mpq_class> terms;
-      std::vector<mpq_class> cycle_areas;
-      for (const auto& c : out.output.irreducible) {
-        if (c.vertices.size() < 3) continue;
-        terms.clear();
-        const std::size_t n = c.vertices.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          const std::size_t j = (i + 1) % n;
-          const mpq_class xi(c.exact[2 * i]), yi(c.exact[2 * i + 1]), xj(c.exact[2 * j]), yj(c.exact[2 * j + 1]);
-          terms.push_back(xi * yj - xj * yi);
-        }
-        mpq_class a2 = sum_balanced(terms);
-        a2 = abs(a2) / 2;
-        cycle_areas.push_back(c.type == PolygonType::island ? a2 : mpq_class(-a2));
+      if (o.area_exact) {
+        const mpq_class exact = *exact_area(r);
+        out.stats.area_exact = exact.get_str();
+        out.stats.area = nearest_double(exact);
       }
-      const mpq_class total = sum_balanced(cycle_areas);
-      out.stats.area_exact = total.get_str();
-      out.stats.area = RationalKernel::to_nearest(total);
-    } else {
-      double total = 0;
-      for (const auto& c : out.output.irreducible) {
-        if (c.vertices.size() < 3) continue;
-        double twice = 0;
-        const std::size_t n = c.vertices.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          const auto& p = c.vertices[i];
-          const auto& q = c.vertices[(i + 1) % n];
-          twice += p.x * q.y - q.x * p.y;
-        }
-        total += (c.type == PolygonType::island ? 0.5 : -0.5) * std::abs(twice);
-      }
-      out.stats.area = total;
     }
+    if (o.area && !out.stats.area) out.stats.area = rounded_area(r);
   }
   return out;
 }

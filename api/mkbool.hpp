@@ -29,7 +29,11 @@ struct BooleanOptions {
   std::string kernel;  // empty: default_kernel()
   bool sorted_ef = false;  // the paper's sorted EF table instead of the hash table
   bool all_pairs = false;  // the paper's all-pairs intersection search
-  bool area = true;        // compute BooleanStats::area and area_exact
+  bool area = true;        // BooleanStats::area: the area rounded to the nearest double
+  bool area_exact = false;  // BooleanStats::area_exact (exact kernels): costs more than the
+                            // operation on results with many crossing points
+  // Output::irreducible[i].exact: the exact coordinates as "p/q" strings (exact kernels).
+  bool exact_coordinates = false;
 };
 
 struct BooleanStats {
@@ -38,9 +42,10 @@ struct BooleanStats {
   std::size_t vertices_in = 0;
   std::size_t crossings = 0;
   std::size_t vertices_out = 0;
-  // Area of the result (regular part), rounded; exact kernels also give it as a reduced
-  // rational "p/q" or integer "p". Empty when unbounded or not asked for
-  // (BooleanOptions::area).
+  // Area of the result (regular part), correctly rounded to the nearest double (+inf when
+  // it exceeds the largest double); exact kernels also give it as a reduced rational "p/q"
+  // or integer "p". Empty when unbounded or not asked for (BooleanOptions::area,
+  // area_exact).
   std::optional<double> area;
   std::optional<std::string> area_exact;
 };

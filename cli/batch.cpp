@@ -86,6 +86,11 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
   o.op = *op;
   o.regular = options.regular;
   o.kernel = options.kernel;
+  o.area_exact = options.area_exact;
+  if (const auto it = line.find("area_exact"); it != line.end()) {
+    if (!it->is_boolean()) throw CaseError{"\"area_exact\" is not true or false"};
+    o.area_exact = o.area_exact && it->get<bool>();
+  }
   BooleanOutput r;
   try {
     r = compute(a, b, o);

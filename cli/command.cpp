@@ -63,6 +63,8 @@ void run_command(const CommandOptions& o) {
   options.regular = o.regular;
   options.kernel = o.kernel;
   options.area = o.stats;  // the area is only reported in --stats
+  options.area_exact = o.stats;
+  options.exact_coordinates = o.format == OutputFormat::native_json;  // only the native format writes them
   PredicateCounters::reset();
   const BooleanOutput result = compute(a, b, options);
   const PredicateCounters counters = PredicateCounters::read();

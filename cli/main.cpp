@@ -78,6 +78,10 @@ int run_batch_form(int argc, char** argv) {
   app.add_option("FILE", o.input, "JSON Lines file, or '-' for standard input")->required();
   app.add_option("--kernel", o.kernel, kernel_help())->check(kernel_validator());
   app.add_flag("--non-regular", non_regular, "closed-set operations (keep dangling edges and points)");
+  bool no_area_exact = false;
+  app.add_flag("--no-area-exact", no_area_exact,
+               "leave out area_exact (the exact area as a rational), which on results with many crossing points "
+               "costs more than the operation; a line's own \"area_exact\": false does the same for that line");
   app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
   try {
     app.parse(argc - 1, argv + 1);  // argv[1] is "batch"
@@ -85,6 +89,7 @@ int run_batch_form(int argc, char** argv) {
     return parse_error(app, e);
   }
   o.regular = !non_regular;
+  o.area_exact = !no_area_exact;
   run_batch(o);
   return static_cast<int>(ExitCode::success);
 }

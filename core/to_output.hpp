@@ -68,8 +68,10 @@ bool is_valid_rounded_output(const std::vector<std::vector<Point>>& rings) {
   return valid;
 }
 
+// `exact_coordinates`: also write each vertex's exact coordinates as strings (exact kernels),
+// which costs more than rounding them.
 template <Kernel K, Kernel V>
-Output to_output(const BooleanResult<K>& r) {
+Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true) {
   Output out;
   out.unbounded = r.unbounded;
   std::vector<std::vector<Point>> rounded;
@@ -78,7 +80,7 @@ Output to_output(const BooleanResult<K>& r) {
     o.type = c.type;
     for (const int id : c.vertices) {
       o.vertices.push_back(K::approx(r.vertex(id)));
-      if constexpr (K::is_exact) {
+      if (K::is_exact && exact_coordinates) {
         const auto e = K::exact_coordinates(r.vertex(id));
         o.exact.push_back(e[0]);
         o.exact.push_back(e[1]);

@@ -232,7 +232,9 @@ int case_command(const CaseSpec& spec, const std::string& op_name, bool regular,
     std::string verdict, title = std::string(k) + ": ";
     std::optional<mk::Output> output;
     try {
-      output = mk::compute(c.a, c.b, mk::BooleanOptions{op, regular, std::string(k)}).output;
+      mk::BooleanOptions options{op, regular, std::string(k)};
+      options.exact_coordinates = true;  // assess() compares exact results exactly
+      output = mk::compute(c.a, c.b, options).output;
       const Assessment as = assess(*output, ref);
       verdict = std::string(verdict_name(as.verdict)) + (as.note.empty() ? "" : " (" + as.note + ")");
     } catch (const std::exception& e) {

@@ -158,6 +158,7 @@ void run_case(const IndexedCase& c, const RunOptions& o, std::size_t first_slot,
         reset_counters();
         BooleanOptions options{op, regular, o.kernels[k]};
         options.area = false;  // the verdict measures areas against the reference itself
+        options.exact_coordinates = true;  // assess() compares exact results exactly
         const BooleanOutput out = compute(cs.a, cs.b, options);
         const Counts counts = read_counters();
         r.predicate_calls = counts.calls;

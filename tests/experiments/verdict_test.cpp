@@ -46,7 +46,9 @@ TEST(Verdict, AnotherStartVertexIsStillExactMatch) {
 TEST(Verdict, EveryKernelMatchesOnIntegerCrossings) {
   const ExactResult ref = exact_reference(kA, kB, Operation::union_, true, true);
   for (const auto k : kernel_names()) {
-    const BooleanOutput out = compute(kA, kB, BooleanOptions{Operation::union_, true, std::string(k)});
+    BooleanOptions options{Operation::union_, true, std::string(k)};
+    options.exact_coordinates = true;
+    const BooleanOutput out = compute(kA, kB, options);
     EXPECT_EQ(assess(out.output, ref).verdict, Verdict::exact_match) << k;
   }
 }
