@@ -75,9 +75,11 @@ bool is_inside_far(const Arrangement<K>& arr, const ResultCycle& outer, const Re
 // For each hole-type cycle, the index of the island-type cycle directly containing it (its
 // shell), or -1; other entries are -1. Candidates are filtered by bounding boxes of the
 // rounded vertices, which is safe: rounding to nearest is monotone, so a cycle inside
-// another has its rounded box inside the other's.
+// another has its rounded box inside the other's. `rounded`, when given, holds each
+// cycle's vertices rounded to nearest (K::approx), so that they are not rounded again.
 template <Kernel K>
-std::vector<int> inclusion_parents(const Arrangement<K>& arr, const std::vector<ResultCycle>& cycles) {
+std::vector<int> inclusion_parents(const Arrangement<K>& arr, const std::vector<ResultCycle>& cycles,
+                                   const std::vector<std::vector<Point>>* rounded = nullptr) {
   struct Box {
     double x0, y0, x1, y1;
   };
@@ -88,8 +90,8 @@ std::vector<int> inclusion_parents(const Arrangement<K>& arr, const std::vector<
   for (std::size_t i = 0; i < n; ++i) {
     if (cycles[i].vertices.size() < 3) continue;
     Box b{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    for (const int v : cycles[i].vertices) {
-      const Point p = K::approx(arr.vertex(v));
+    for (std::size_t k = 0; k < cycles[i].vertices.size(); ++k) {
+      const Point p = rounded ? (*rounded)[i][k] : K::approx(arr.vertex(cycles[i].vertices[k]));
       b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
     }
     box[i] = b;
