@@ -189,9 +189,8 @@ inline Approx approximate(const RationalPoint& p) {
 inline Approx approximate(const ExactVertex& v) {
   if (!v.is_crossing) return approximate(v.a0);
   Point c, tail;
-  if (nearest_crossing(v.a0, v.a1, v.b0, v.b1, c, &tail)) {
-    return {c.x, tail.x, c.y, tail.y, 0x1p-39 * std::max(std::fabs(tail.x), std::fabs(tail.y)) + 0x1p-1073, true};
-  }
+  double err = 0;
+  if (nearest_crossing(v.a0, v.a1, v.b0, v.b1, c, &tail, &err)) return {c.x, tail.x, c.y, tail.y, err, true};
   return approximate(ExactKernel::exact(v));
 }
 
