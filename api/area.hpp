@@ -25,16 +25,19 @@ namespace mk {
 namespace area_detail {
 
 // ---- Exact area -------------------------------------------------------------------------
-// Each vertex in homogeneous integer coordinates x = X / D * 2^s, y = Y / D * 2^s, D > 0,
-// with one unit 2^s for the whole result. The shoelace sum over a cycle is then
-//   sum_i (X_i Y_i+1 - X_i+1 Y_i) / (D_i D_i+1),
-// and neighbouring terms share a denominator. A range of terms l..r-1 is kept as
-// P / (D_l M D_r) with M the product of the interior denominators, so that joining two
-// ranges multiplies in each denominator once (binary splitting: near-linear in the size of
-// the answer with GMP's fast multiplication), and one gcd at the end reduces the sum.
+// Each vertex in homogeneous integer coordinates with its power of two apart:
+//   x = X 2^e / D,  y = Y 2^e / D,  D > 0 odd.
+// The shoelace sum over a cycle is then sum_i 2^(e_i + e_i+1) (X_i Y_i+1 - X_i+1 Y_i) /
+// (D_i D_i+1), and neighbouring terms share a denominator. A range of terms l..r-1 is kept
+// as P 2^E / (D_l M D_r) with M the product of the interior denominators, so that joining
+// two ranges multiplies in each denominator once (binary splitting: near-linear in the size
+// of the answer with GMP's fast multiplication), and the powers of two never enter the
+// products: the one gcd at the end runs on odd denominators only, a fraction of the size
+// they would have with the powers of two of every coordinate multiplied in.
 
 struct Homogeneous {
-  mpz_class x, y, d;
+  mpz_class x, y, d;  // d odd, positive
+  long e = 0;
 };
 
 // The exponent of the last place of v: v is an integer multiple of 2^granularity(v).
@@ -46,8 +49,7 @@ inline mpz_class scaled_integer(double v, int unit) {
   if (v == 0.0) return z;
   const int g = granularity(v);
   mpz_set_d(z.get_mpz_t(), std::ldexp(v, -g));  // the 53-bit integer significand
-  const int shift = g - unit;
-  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), static_cast<mp_bitcnt_t>(g - unit));
   return z;
 }
 
@@ -56,13 +58,45 @@ inline void lower_unit(const Point& p, int& unit) {
   if (p.y != 0.0) unit = std::min(unit, granularity(p.y));
 }
 
-// Homogeneous coordinates per kernel vertex type. Points of doubles and the exact kernel's
-// vertices share the unit of the smallest last place among the input points; rationals use
-// unit 1 and their own denominators.
-inline Homogeneous homogeneous(const Point& p, int unit) { return {scaled_integer(p.x, unit), scaled_integer(p.y, unit), 1}; }
+// Moves the common factors of two of X and Y, and all of D's, into the exponent.
+inline void normalize(Homogeneous& h) {
+  if (sgn(h.d) < 0) {
+    h.d = -h.d;
+    h.x = -h.x;
+    h.y = -h.y;
+  }
+  const mp_bitcnt_t kd = mpz_scan1(h.d.get_mpz_t(), 0);
+  if (kd > 0) {
+    mpz_fdiv_q_2exp(h.d.get_mpz_t(), h.d.get_mpz_t(), kd);
+    h.e -= static_cast<long>(kd);
+  }
+  const bool zx = sgn(h.x) == 0, zy = sgn(h.y) == 0;
+  if (zx && zy) return;
+  mp_bitcnt_t k = zx ? mpz_scan1(h.y.get_mpz_t(), 0) : mpz_scan1(h.x.get_mpz_t(), 0);
+  if (!zy) k = std::min(k, mpz_scan1(h.y.get_mpz_t(), 0));
+  if (!zx) k = std::min(k, mpz_scan1(h.x.get_mpz_t(), 0));
+  if (k > 0) {
+    mpz_fdiv_q_2exp(h.x.get_mpz_t(), h.x.get_mpz_t(), k);  // exact: both are multiples
+    mpz_fdiv_q_2exp(h.y.get_mpz_t(), h.y.get_mpz_t(), k);
+    h.e += static_cast<long>(k);
+  }
+}
 
-inline Homogeneous homogeneous(const ExactVertex& v, int unit) {
-  if (!v.is_crossing) return homogeneous(v.a0, unit);
+// Homogeneous coordinates per kernel vertex type, each in the unit of its own smallest
+// last place.
+inline Homogeneous homogeneous(const Point& p) {
+  int unit = 100000;
+  lower_unit(p, unit);
+  if (unit == 100000) return {0, 0, 1, 0};
+  Homogeneous h{scaled_integer(p.x, unit), scaled_integer(p.y, unit), 1, unit};
+  normalize(h);
+  return h;
+}
+
+inline Homogeneous homogeneous(const ExactVertex& v) {
+  if (!v.is_crossing) return homogeneous(v.a0);
+  int unit = 100000;
+  for (const Point& p : {v.a0, v.a1, v.b0, v.b1}) lower_unit(p, unit);
   const auto z = [&](double c) { return scaled_integer(c, unit); };
   const mpz_class ax = z(v.a0.x), ay = z(v.a0.y);
   const mpz_class dax = z(v.a1.x) - ax, day = z(v.a1.y) - ay;
@@ -70,33 +104,22 @@ inline Homogeneous homogeneous(const ExactVertex& v, int unit) {
   const mpz_class dbx = z(v.b1.x) - bx, dby = z(v.b1.y) - by;
   Homogeneous h;
   h.d = dax * dby - day * dbx;
-  mpz_class n = (bx - ax) * dby - (by - ay) * dbx;  // t = n / d along a
-  if (sgn(h.d) < 0) {
-    h.d = -h.d;
-    n = -n;
-  }
+  const mpz_class n = (bx - ax) * dby - (by - ay) * dbx;  // t = n / d along a
   h.x = ax * h.d + n * dax;
   h.y = ay * h.d + n * day;
+  h.e = unit;
+  normalize(h);
   return h;
 }
 
-inline Homogeneous homogeneous(const RationalPoint& p, int /*unit*/) {
+inline Homogeneous homogeneous(const RationalPoint& p) {
   Homogeneous h;
   mpz_lcm(h.d.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
   h.x = p.x.get_num() * (h.d / p.x.get_den());
   h.y = p.y.get_num() * (h.d / p.y.get_den());
+  normalize(h);
   return h;
 }
-
-inline void lower_unit(const ExactVertex& v, int& unit) {
-  lower_unit(v.a0, unit);
-  if (v.is_crossing) {
-    lower_unit(v.a1, unit);
-    lower_unit(v.b0, unit);
-    lower_unit(v.b1, unit);
-  }
-}
-inline void lower_unit(const RationalPoint&, int& unit) { unit = std::min(unit, 0); }
 
 inline void multiply(mpz_class& r, const mpz_class& a, const mpz_class& b) {
   if (a == 1) {
@@ -108,9 +131,15 @@ inline void multiply(mpz_class& r, const mpz_class& a, const mpz_class& b) {
   }
 }
 
+// p * 2^k for k >= 0.
+inline void shift_up(mpz_class& p, long k) {
+  if (k > 0) mpz_mul_2exp(p.get_mpz_t(), p.get_mpz_t(), static_cast<mp_bitcnt_t>(k));
+}
+
 struct Range {
-  mpz_class p;      // numerator
-  mpz_class m = 1;  // product of the interior denominators
+  mpz_class p;      // numerator, times 2^e
+  long e = 0;
+  mpz_class m = 1;  // product of the interior denominators (odd)
 };
 
 // Terms l..r-1 of the cycle `v` (term i joins vertex i and vertex i + 1 mod n).
@@ -119,7 +148,10 @@ inline Range sum_range(const std::vector<Homogeneous>& v, std::size_t l, std::si
   if (r - l == 1) {
     const Homogeneous& a = v[l];
     const Homogeneous& b = v[(l + 1) % n];
-    return {a.x * b.y - b.x * a.y, 1};
+    Range out;
+    out.p = a.x * b.y - b.x * a.y;
+    out.e = a.e + b.e;
+    return out;
   }
   const std::size_t mid = l + (r - l) / 2;
   Range left = sum_range(v, l, mid);
@@ -128,6 +160,9 @@ inline Range sum_range(const std::vector<Homogeneous>& v, std::size_t l, std::si
   const mpz_class& dm = v[mid].d;
   const mpz_class& dr = v[r % n].d;
   Range out;
+  out.e = std::min(left.e, right.e);
+  shift_up(left.p, left.e - out.e);
+  shift_up(right.p, right.e - out.e);
   mpz_class f, g;
   multiply(f, right.m, dr);
   multiply(g, dl, left.m);
@@ -140,8 +175,9 @@ inline Range sum_range(const std::vector<Homogeneous>& v, std::size_t l, std::si
 }
 
 struct Fraction {
-  mpz_class p;
-  mpz_class q = 1;
+  mpz_class p;  // times 2^e
+  long e = 0;
+  mpz_class q = 1;  // odd
 };
 
 inline Fraction sum_fractions(std::vector<Fraction>& f, std::size_t l, std::size_t r) {
@@ -150,6 +186,9 @@ inline Fraction sum_fractions(std::vector<Fraction>& f, std::size_t l, std::size
   Fraction a = sum_fractions(f, l, mid);
   Fraction b = sum_fractions(f, mid, r);
   Fraction out;
+  out.e = std::min(a.e, b.e);
+  shift_up(a.p, a.e - out.e);
+  shift_up(b.p, b.e - out.e);
   mpz_class s, t;
   multiply(s, a.p, b.q);
   multiply(t, b.p, a.q);
@@ -288,26 +327,21 @@ template <Kernel K>
 std::optional<mpq_class> exact_area(const BooleanResult<K>& r) {
   using namespace area_detail;
   if (r.unbounded) return std::nullopt;
-  int unit = 100000;
-  for (const auto& c : r.cycles) {
-    if (c.vertices.size() < 3) continue;
-    for (const int id : c.vertices) lower_unit(r.vertex(id), unit);
-  }
-  if (unit == 100000) unit = 0;
   std::vector<Fraction> parts;
   std::vector<Homogeneous> v;
   for (const auto& c : r.cycles) {
     if (c.vertices.size() < 3) continue;
     v.clear();
-    for (const int id : c.vertices) v.push_back(homogeneous(r.vertex(id), unit));
+    for (const int id : c.vertices) v.push_back(homogeneous(r.vertex(id)));
     Range s = sum_range(v, 0, v.size());
-    // The cycle's twice-area is P / (D_0 M D_0); its magnitude counts, its type the sign.
-    // Reduced here, where the numbers are small (a cycle's area has a denominator dividing
-    // the product of its vertices' denominators, so this removes D_0 at least), so that the
-    // sum of all cycles carries only what the answer needs into its one large gcd.
+    // The cycle's twice-area is P 2^E / (D_0 M D_0); its magnitude counts, its type the
+    // sign. Reduced here, where the numbers are small (a cycle's area has a denominator
+    // dividing the product of its vertices' denominators, so this removes D_0 at least),
+    // so that the sum of all cycles carries only what the answer needs into its one gcd.
     Fraction f;
     f.p = abs(s.p);
     if (c.type == PolygonType::hole) f.p = -f.p;
+    f.e = s.e;
     mpz_class d0sq;
     multiply(d0sq, v[0].d, v[0].d);
     multiply(f.q, d0sq, s.m);
@@ -323,10 +357,13 @@ std::optional<mpq_class> exact_area(const BooleanResult<K>& r) {
   }
   if (parts.empty()) return mpq_class(0);
   Fraction total = sum_fractions(parts, 0, parts.size());
+  // Twice the area is p 2^e / q with q odd: the power of two needs no gcd.
+  if (sgn(total.p) == 0) return mpq_class(0);
+  const mp_bitcnt_t zeros = mpz_scan1(total.p.get_mpz_t(), 0);
+  mpz_fdiv_q_2exp(total.p.get_mpz_t(), total.p.get_mpz_t(), zeros);
+  const long e = total.e + static_cast<long>(zeros) - 1;  // and halved
   mpq_class a(total.p, total.q);
-  a.canonicalize();
-  // Twice the area in units of 2^(2 unit): area = a * 2^(2 unit) / 2.
-  const long e = 2L * unit - 1;
+  a.canonicalize();  // an odd numerator over an odd denominator: the gcd is odd
   if (e >= 0) {
     mpq_mul_2exp(a.get_mpq_t(), a.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
   } else {
