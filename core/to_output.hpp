@@ -6,7 +6,9 @@
 // doubles (its Point constructible from mk::Point) used to check the rounded output.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/assemble.hpp"
@@ -88,12 +90,89 @@ bool is_valid_rounded_output(const std::vector<std::vector<Point>>& rings) {
   return detail::are_valid_indexed_rings<V>(pts, indexed);
 }
 
+namespace detail {
+
+// The check of are_valid_indexed_rings restricted to what rounding can change, for a
+// result with few crossing points: only crossings move when rounded (input points are
+// doubles), so an edge between two input points is the exact result's own, and the exact
+// result passes the check (its cycles are vertex-complete, edges meet at shared vertices
+// only). Every edge at a crossing is tested against every edge whose box meets its box, the
+// same pairs the sweep would test; empty when there are more than `max_moved` such edges.
+template <Kernel K, Kernel V>
+std::optional<bool> are_valid_where_rounded(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
+                                            std::size_t max_moved) {
+  struct RoundedEdge {
+    Point a, b;
+    bool moved;
+  };
+  const int num_points = r.arrangement.num_points();
+  std::vector<RoundedEdge> edges;
+  std::vector<std::size_t> moved;
+  for (std::size_t c = 0; c < r.cycles.size(); ++c) {
+    const auto& ids = r.cycles[c].vertices;
+    const std::size_t n = ids.size();
+    if (n < 2) continue;
+    for (std::size_t i = 0; i < (n == 2 ? 1 : n); ++i) {
+      const std::size_t j = (i + 1) % n;
+      bool m = ids[i] >= num_points || ids[j] >= num_points;
+      if constexpr (!std::is_same_v<typename K::Point, Point>) {
+        // Input points that are not doubles (exact rational input) may move too.
+        const auto stays = [&](std::size_t k) {
+          return K::compare_vertices(K::vertex(K::point(rounded[c][k])), r.vertex(ids[k])) == Sign::zero;
+        };
+        m = m || !stays(i) || !stays(j);
+      }
+      if (m) {
+        if (moved.size() == max_moved) return std::nullopt;
+        moved.push_back(edges.size());
+      }
+      edges.push_back({rounded[c][i], rounded[c][j], m});
+    }
+  }
+  if (moved.empty()) return true;
+  struct Box {
+    double x0, y0, x1, y1;
+    bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+  };
+  const auto box = [](const RoundedEdge& e) {
+    return Box{std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y)};
+  };
+  Box all = box(edges[moved[0]]);
+  std::vector<Box> moved_box;
+  for (const std::size_t m : moved) {
+    const RoundedEdge& e = edges[m];
+    if (e.a == e.b) return false;  // a collapsed edge
+    const Box b = box(e);
+    moved_box.push_back(b);
+    all = {std::min(all.x0, b.x0), std::min(all.y0, b.y0), std::max(all.x1, b.x1), std::max(all.y1, b.y1)};
+  }
+  for (std::size_t f = 0; f < edges.size(); ++f) {
+    const Box fb = box(edges[f]);
+    if (!fb.meets(all)) continue;
+    for (std::size_t k = 0; k < moved.size(); ++k) {
+      const std::size_t e = moved[k];
+      // Each pair once: a moved edge meets the moved edges after it only.
+      if (e == f || (edges[f].moved && f < e) || !fb.meets(moved_box[k])) continue;
+      const RoundedEdge& p = edges[e];
+      const RoundedEdge& q = edges[f];
+      if ((p.a == q.a && p.b == q.b) || (p.a == q.b && p.b == q.a)) return false;  // the same segment twice
+      const auto rel = relate_segments<V>(V::point(p.a), V::point(p.b), V::point(q.a), V::point(q.b));
+      if (rel.proper_crossing || rel.touches()) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace detail
+
 // The same check on a result's cycles, given their vertices rounded: the input points keep
 // their lexicographic ids (prepare numbers them so), so only the crossings need sorting,
 // and a merge puts every rounded point in order. Linear in the input points used, plus
 // k log k for the k crossings.
 template <Kernel K, Kernel V>
 bool is_valid_rounded_result(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded) {
+  // Few crossings: test the edges at them only, in one pass over the edges.
+  if (const auto local = detail::are_valid_where_rounded<K, V>(r, rounded, 64)) return *local;
   const int num_points = r.arrangement.num_points();
   std::vector<int> slot(static_cast<std::size_t>(r.arrangement.num_vertices()), -1);
   std::vector<std::pair<int, Point>> collected, crossings;  // (id, rounded point)
