@@ -28,10 +28,22 @@ enum class Verdict : unsigned char {
   timeout,          // the run exceeded the time limit and was killed
   crash,            // the process running the case died (signal)
   invalid_input,    // the reference rejected the input: a generator bug, not a kernel's
+  // Verdicts of peer libraries (peer_verdict.hpp), whose results are never exact vertex for
+  // vertex, and of runs on external cases (reported, --cases):
+  exact_area,     // the exact area equals the exact result's and their symmetric difference is empty
+  rounding_only,  // symmetric difference with the exact result within the rounding bound
+  wrong,          // beyond it
+  exception,      // the library threw or reported an error
+  refused,        // mkbool refused the external input (outside its domain, e.g. self-crossing)
+  unjudged,       // no exact result to compare with (mkbool refused the input); output valid
+  unsupported,    // the back end cannot express the input (a hole-type polygon for OGC libraries)
 };
 inline constexpr Verdict all_verdicts[] = {Verdict::exact_match, Verdict::valid_different, Verdict::invalid_output,
                                            Verdict::error,       Verdict::timeout,         Verdict::crash,
-                                           Verdict::invalid_input};
+                                           Verdict::invalid_input, Verdict::refused};
+inline constexpr Verdict peer_verdicts[] = {Verdict::exact_area, Verdict::rounding_only, Verdict::wrong,
+                                            Verdict::invalid_output, Verdict::exception, Verdict::timeout,
+                                            Verdict::crash, Verdict::unjudged, Verdict::unsupported};
 
 std::string_view verdict_name(Verdict v);
 std::optional<Verdict> parse_verdict(std::string_view name);
@@ -78,6 +90,11 @@ PolygonType ccw_type_of(const ExactResult& reference);
 // edges, no collapsed ring) and every area ring's exact orientation agrees with its type
 // (counterclockwise rings have type `ccw_type`). `why` receives the reason when not.
 bool is_valid_output(const Output& output, PolygonType ccw_type, std::string* why = nullptr);
+
+// Whether regions overlap at a vertex where rings meet (turning around it, the region is
+// entered twice in a row), or two edges leave a vertex along one ray. Rings must have the
+// region on their left when `region_left` (counterclockwise islands), on their right otherwise.
+bool have_overlapping_sectors(const Output& output, bool region_left);
 
 // Exact area of the symmetric difference of two results given as area cycles (rings of
 // 3+ vertices, nesting decides the region as in the paper's polygon model; unbounded
