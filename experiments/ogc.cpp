@@ -24,20 +24,38 @@ bool in_box(const Point& a, const Point& b, const Point& p) {
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
 }
 
-// Whether ring r lies inside ring s, decided at the first vertex of r not on s (rings that
-// do not cross); empty when every vertex of r lies on s.
+enum class Side { inside, on, outside };
+
+// Where the exact point (px, py) lies against ring s (crossing parity).
+Side locate(const mpq_class& px, const mpq_class& py, const Ring& s) {
+  bool in = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Point& a = s[i];
+    const Point& b = s[(i + 1) % s.size()];
+    const bool straddles = (a.y > py) != (b.y > py);
+    const bool boxed = std::min(a.x, b.x) <= px && px <= std::max(a.x, b.x) && std::min(a.y, b.y) <= py &&
+                       py <= std::max(a.y, b.y);
+    if (!straddles && !boxed) continue;
+    const mpq_class ax(a.x), ay(a.y);
+    const int o = sgn((mpq_class(b.x) - ax) * (py - ay) - (mpq_class(b.y) - ay) * (px - ax));
+    if (o == 0 && boxed) return Side::on;
+    if (straddles && ((b.y > a.y) ? o > 0 : o < 0)) in = !in;
+  }
+  return in ? Side::inside : Side::outside;
+}
+
+// Whether ring r lies inside ring s (rings that do not cross), decided at the first vertex
+// of r not on s, else at the first edge midpoint of r not on s; empty when all lie on s.
 std::optional<bool> is_ring_inside(const Ring& r, const Ring& s) {
   for (const Point& p : r) {
-    bool on = false, in = false;
-    for (std::size_t i = 0; i < s.size() && !on; ++i) {
-      const Point& a = s[i];
-      const Point& b = s[(i + 1) % s.size()];
-      if (!in_box(a, b, p) && (a.y > p.y) == (b.y > p.y)) continue;
-      const int o = orientation(a, b, p);
-      if (o == 0 && in_box(a, b, p)) on = true;
-      else if ((a.y > p.y) != (b.y > p.y) && ((b.y > a.y) ? o > 0 : o < 0)) in = !in;
-    }
-    if (!on) return in;
+    const Side side = locate(mpq_class(p.x), mpq_class(p.y), s);
+    if (side != Side::on) return side == Side::inside;
+  }
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point& a = r[i];
+    const Point& b = r[(i + 1) % r.size()];
+    const Side side = locate((mpq_class(a.x) + b.x) / 2, (mpq_class(a.y) + b.y) / 2, s);
+    if (side != Side::on) return side == Side::inside;
   }
   return std::nullopt;
 }
@@ -75,8 +93,8 @@ Ring without_repeats(const Ring& r) {
   return out;
 }
 
-// Every ring with the vertices of all rings that lie inside its edges inserted (in order
-// along the edge): touching at points becomes sharing vertices.
+}  // namespace
+
 std::vector<Ring> vertex_complete(const std::vector<Ring>& rings) {
   std::vector<Point> all;
   for (const Ring& r : rings) all.insert(all.end(), r.begin(), r.end());
@@ -106,8 +124,6 @@ std::vector<Ring> vertex_complete(const std::vector<Ring>& rings) {
   }
   return out;
 }
-
-}  // namespace
 
 std::optional<MultiPolygon> ogc_form(const Polygon& p) {
   if (p.type != PolygonType::island) return std::nullopt;

@@ -17,6 +17,10 @@ namespace mk::experiments {
 // nesting cannot be decided (every vertex on another ring).
 std::optional<MultiPolygon> ogc_form(const Polygon& p);
 
+// Every ring with the vertices of all the rings that lie inside its edges inserted, in
+// order along the edge: rings that touch at points then share vertices.
+std::vector<Ring> vertex_complete(const std::vector<Ring>& rings);
+
 // Whether polygons of doubles are valid in the OGC sense, decided exactly: finite
 // coordinates; rings of 3+ distinct points and non-zero area; after inserting every vertex
 // that lies inside an edge (touching is allowed at points), no two edges cross or overlap

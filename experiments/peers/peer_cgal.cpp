@@ -17,6 +17,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "experiments/ogc.hpp"
 #include "experiments/peers/peers.hpp"
 
 namespace mk::experiments {
@@ -88,7 +89,9 @@ CgalSet to_set(const PeerInput& in) {
   }
   for (const Ring& r : in.polygon->rings) {
     if (r.size() < 3) continue;  // points and two-sided rings bound no area
-    for (const Ring& loop : loops(r)) {
+    // A vertex inside the ring's own edge becomes a vertex of that edge, so the loops
+    // between repeated vertices are simple.
+    for (const Ring& loop : loops(vertex_complete({r}).front())) {
       if (loop.size() < 3) continue;
       const CgalPolygon p = to_cgal(loop, true);
       if (!p.is_simple()) {
