@@ -279,17 +279,20 @@ int merge_command(const std::vector<std::string>& dirs, std::string out, bool pl
   return 0;
 }
 
-int case_command(const CaseSpec& spec, const std::string& op_name, bool regular, const std::string& out) {
+int case_command(const CaseSpec& spec, const std::string& op_name, bool regular, const std::string& out, bool pictures) {
   const Case c = make_case(spec);
   const mk::Operation op = parse_operation(op_name);
   fs::create_directories(out);
-  const std::string stem = spec.stem() + "_" + op_name + (regular ? "" : "_nonregular");
+  // External cases are named by their id (a production case keeps its name as a test).
+  const std::string stem = (is_external_generator(spec.generator) ? spec.generator + "_" + spec.variant : spec.stem()) +
+                           "_" + op_name + (regular ? "" : "_nonregular");
   std::ofstream(fs::path(out) / (stem + ".wkt")) << regression_case_text(
       c.a, c.b, op, regular, {"generator=" + spec.generator + " variant=" + spec.variant + " params=" +
                                   spec.params_text() + " seed=" + std::to_string(spec.seed)});
   const ExactResult ref = exact_reference(c.a, c.b, op, regular, false);
   std::cout << (fs::path(out) / (stem + ".wkt")).string() << ": " << c.size() << " input vertices, exact result "
             << ref.cycles.size() << " polygons\n";
+  if (!pictures) return 0;
   for (const auto k : mk::kernel_names()) {
     std::string verdict, title = std::string(k) + ": ";
     std::optional<mk::Output> output;
@@ -352,16 +355,18 @@ int main(int argc, char** argv) {
   auto* list = app.add_subcommand("list", "list generators (with variants) and kernels");
 
   CaseSpec spec;
-  std::string case_params, case_op = "intersection", case_out = ".";
-  bool case_nonregular = false;
+  std::string case_params, case_op = "intersection", case_out = ".", case_file;
+  bool case_nonregular = false, case_no_pictures = false;
   auto* one = app.add_subcommand("case", "regenerate one case: regression case file and a picture per kernel");
   one->add_option("--generator", spec.generator, "generator name")->required();
   one->add_option("--variant", spec.variant, "variant name (CSV column variant)")->required();
   one->add_option("--params", case_params, "parameters as in the CSV, e.g. k=-3 or i=4;j=8");
-  one->add_option("--seed", spec.seed, "case seed (CSV column seed)")->required();
+  one->add_option("--seed", spec.seed, "case seed (CSV column seed; any value for reported and cases)");
   one->add_option("--op", case_op, "intersection, union, difference or xor")->capture_default_str();
   one->add_flag("--nonregular", case_nonregular, "non-regular operation");
   one->add_option("-o,--out", case_out, "output directory")->capture_default_str();
+  one->add_option("--cases", case_file, "JSON Lines file of generator `cases` (the case is --variant ID)")->check(CLI::ExistingFile);
+  one->add_flag("--no-pictures", case_no_pictures, "write the regression case file only");
 
   CLI11_PARSE(app, argc, argv);
   try {
@@ -386,7 +391,8 @@ int main(int argc, char** argv) {
     }
     if (*one) {
       spec.params = parse_params(case_params);
-      return case_command(spec, case_op, !case_nonregular, case_out);
+      if (!case_file.empty()) set_user_cases(case_file);
+      return case_command(spec, case_op, !case_nonregular, case_out, !case_no_pictures);
     }
   } catch (const CLI::Error& e) {
     return app.exit(e);
