@@ -74,14 +74,11 @@ std::optional<std::vector<int>> depths(const std::vector<const Ring*>& rings) {
   return depth;
 }
 
+// Twice the signed area of a ring of doubles, exactly.
 mpq_class twice_area(const Ring& r) {
-  mpq_class a = 0;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const Point& p = r[i];
-    const Point& q = r[(i + 1) % r.size()];
-    a += mpq_class(p.x) * mpq_class(q.y) - mpq_class(q.x) * mpq_class(p.y);
-  }
-  return a;
+  std::vector<RationalPoint> exact;
+  for (const Point& p : r) exact.push_back(RationalKernel::point(p));
+  return twice_signed_area(exact);
 }
 
 Ring without_repeats(const Ring& r) {

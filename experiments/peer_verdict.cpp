@@ -16,26 +16,6 @@ namespace {
 
 using Rings = std::vector<std::vector<RationalPoint>>;
 
-mpq_class twice_signed_area(const std::vector<RationalPoint>& r) {
-  mpq_class a = 0;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const auto& p = r[i];
-    const auto& q = r[(i + 1) % r.size()];
-    a += p.x * q.y - q.x * p.y;
-  }
-  return a;
-}
-
-mpq_class typed_area(const std::vector<ExactCycle>& cycles) {
-  mpq_class total = 0;
-  for (const auto& c : cycles) {
-    if (c.vertices.size() < 3) continue;
-    const mpq_class a = abs(twice_signed_area(c.vertices)) / 2;
-    total += c.type == PolygonType::island ? a : mpq_class(-a);
-  }
-  return total;
-}
-
 enum class Location { inside, boundary, outside };
 
 // Crossing parity of p against every ring (the nesting-parity region), exact; rays to +x.
@@ -80,6 +60,8 @@ std::optional<bool> is_in(const Rings& rings, bool complement, const RationalPoi
   return (l == Location::inside) != complement;
 }
 
+// The set operations on memberships, written here rather than taken from the core's
+// selection tables, so that the point check stays independent of them. [BRIEF §1]
 bool in_result(Operation op, bool in_a, bool in_b) {
   switch (op) {
     case Operation::intersection: return in_a && in_b;

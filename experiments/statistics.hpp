@@ -30,11 +30,12 @@ inline std::pair<double, double> wilson_interval(std::size_t k, std::size_t n) {
 
 namespace mk::experiments {
 
-// A percentage with as many digits as it needs: 12%, 3.4%, 0.052%.
+// A percentage with as many digits as it needs: 12%, 3.4%, 0.052%, 99.94%.
 inline std::string percent(double fraction) {
   const double pct = 100 * fraction;
   char buf[32];
-  if (pct == 0 || pct >= 10) std::snprintf(buf, sizeof buf, "%.0f%%", pct);
+  if (pct > 99.5 && pct < 100) std::snprintf(buf, sizeof buf, "%.2f%%", pct);  // 99.94%, not 100%
+  else if (pct == 0 || pct >= 10) std::snprintf(buf, sizeof buf, "%.0f%%", pct);
   else if (pct >= 0.1) std::snprintf(buf, sizeof buf, "%.1f%%", pct);
   else std::snprintf(buf, sizeof buf, "%.2g%%", pct);
   return buf;

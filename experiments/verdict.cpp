@@ -44,8 +44,6 @@ std::optional<Verdict> parse_verdict(std::string_view name) {
   return std::nullopt;
 }
 
-namespace {
-
 mpq_class twice_signed_area(const std::vector<RationalPoint>& r) {
   mpq_class a = 0;
   for (std::size_t i = 0; i < r.size(); ++i) {
@@ -66,6 +64,8 @@ mpq_class typed_area(const std::vector<ExactCycle>& cycles) {
   }
   return total;
 }
+
+namespace {
 
 // A cycle as a comparable key: its type and its vertices from the lexicographically least
 // rotation (cycles have no distinguished start; their direction is part of the result).

@@ -119,6 +119,11 @@ std::optional<mpq_class> parity_area(const std::vector<std::vector<RationalPoint
 // Returns a description of the first one violated, or empty (also when not checkable).
 std::optional<std::string> violated_identity(const Polygon& x, const Polygon& y);
 
+// Twice the signed area of a ring (shoelace, exact), and the area of a bounded result from
+// its typed cycles (islands add, holes subtract; cycles of fewer than 3 vertices add nothing).
+mpq_class twice_signed_area(const std::vector<RationalPoint>& ring);
+mpq_class typed_area(const std::vector<ExactCycle>& cycles);
+
 // The output's cycles with exact coordinates (parsed "p/q" when present, else the doubles).
 std::vector<ExactCycle> exact_cycles(const Output& output);
 

@@ -37,6 +37,7 @@ TEST(Statistics, WilsonIntervalsMatchHandComputedValues) {
   EXPECT_NEAR(hi, 0.76341, 1e-5);
   EXPECT_EQ(rate_with_interval(0, 10), "0 [0–28%]");
   EXPECT_EQ(rate_with_interval(5, 10), "50% (5) [24%–76%]");
+  EXPECT_EQ(percent(13912.0 / 13920), "99.94%");  // never rounded up to 100%
 }
 
 TEST(Ogc, NestingGivesShellsWithTheirHoles) {
