@@ -39,4 +39,11 @@ bool is_failure(Outcome o);
 // The Markdown sections (empty when the rows hold no peer and no external case).
 std::string library_report(const std::vector<ResultRow>& rows);
 
+// The reported corpus and the user's cases, one line per case with what each back end
+// gives on the operation the case names (report_corpus.cpp); empty without such cases.
+std::string corpus_report(const std::vector<ResultRow>& rows, const std::vector<std::string>& backends);
+
+// Text fit for a Markdown table cell (no '|', no line breaks).
+std::string markdown_cell(std::string s);
+
 }  // namespace mk::experiments
