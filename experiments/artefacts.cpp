@@ -23,6 +23,7 @@
 #include "api/mkbool.hpp"
 #include "core/error.hpp"
 #include "experiments/generators.hpp"
+#include "experiments/peer_verdict.hpp"
 #include "experiments/verdict.hpp"
 #include "io/native_json.hpp"
 #include "io/svg.hpp"
@@ -169,7 +170,9 @@ int severity(const ResultRow& r) {
     case Verdict::crash: return 0;
     case Verdict::timeout: return 1;
     case Verdict::invalid_output: return 2;
-    case Verdict::error: return 3;
+    case Verdict::error:
+    case Verdict::exception: return 3;
+    case Verdict::wrong: return 4;
     default: return r.area_error && *r.area_error > 1e-12 ? 4 : 5;
   }
 }
@@ -218,7 +221,7 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
   std::vector<const ResultRow*> exact_failures;
   std::map<std::pair<std::string, std::string>, std::vector<const ResultRow*>> inexact;
   for (const auto& r : rows) {
-    if (r.verdict == Verdict::exact_match || r.verdict == Verdict::invalid_input) continue;
+    if (!is_failure(r.verdict)) continue;
     if (r.kernel == "reference" || is_exact_kernel(r.kernel)) exact_failures.push_back(&r);
     else inexact[{r.kernel, r.generator}].push_back(&r);
   }
@@ -285,7 +288,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
           const bool rerun = r->kernel != "reference" && r->verdict != Verdict::crash && r->verdict != Verdict::timeout;
           if (rerun) {
             try {
-              kernel_out = compute(c.a, c.b, BooleanOptions{op, r->regular, r->kernel}).output;
+              kernel_out = is_peer(r->kernel) ? peer_as_output(run_peer_on_case(r->kernel, c, op))
+                                              : compute(c.a, c.b, BooleanOptions{op, r->regular, r->kernel}).output;
             } catch (const std::exception& e) {
               title += " (" + std::string(e.what()).substr(0, 80) + ")";
             }

@@ -12,9 +12,13 @@
 #include <map>
 #include <thread>
 
+#include <gmp.h>
+
 #include "api/mkbool.hpp"
 #include "experiments/artefacts.hpp"
+#include "experiments/external_cases.hpp"
 #include "experiments/generators.hpp"
+#include "experiments/peers/peers.hpp"
 #include "experiments/report.hpp"
 #include "experiments/runner.hpp"
 
@@ -32,7 +36,9 @@ struct RunArgs {
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   double timeout = 0;
   std::size_t memory_mb = 0;
-  bool no_artefacts = false, no_report = false, no_plots = false;
+  bool no_artefacts = false, no_report = false, no_plots = false, no_peers = false;
+  std::size_t peer_every = 0;
+  std::string cases;
   std::string out;
 };
 
@@ -65,6 +71,47 @@ std::size_t default_memory_mb(int jobs) {
   return static_cast<std::size_t>(0.8 * mb / std::max(1, jobs));
 }
 
+std::string first_line_of(const std::string& command) {
+  std::string out;
+  if (FILE* f = ::popen(command.c_str(), "r")) {
+    char buf[512];
+    if (std::fgets(buf, sizeof buf, f) != nullptr) out = buf;
+    ::pclose(f);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out;
+}
+
+// What the sweep ran on: the commit, the libraries' versions, the compiler and the CPU.
+std::vector<std::string> environment_lines() {
+  std::vector<std::string> out;
+  const std::string src = MK_EXPERIMENTS_SOURCE_DIR;
+  std::string commit = first_line_of("git -C '" + src + "' rev-parse --short=12 HEAD 2>/dev/null");
+  if (commit.empty()) commit = "unknown (not a git checkout)";
+  else if (!first_line_of("git -C '" + src + "' status --porcelain --untracked-files=no 2>/dev/null").empty()) commit += " (with uncommitted changes)";
+  out.push_back("commit: " + commit);
+  std::string libs = std::string("GMP ") + gmp_version;
+  for (const auto& v : peer_versions()) libs += ", " + v;
+  out.push_back("libraries: " + libs);
+  out.push_back("compiler: " + std::string(
+#if defined(__clang__)
+      "clang "
+#elif defined(__GNUC__)
+      "GCC "
+#endif
+      __VERSION__));
+  std::ifstream cpu("/proc/cpuinfo");
+  std::string line, model = "unknown";
+  while (std::getline(cpu, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  out.push_back("cpu: " + model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads");
+  return out;
+}
+
 void print_counts(const std::vector<ResultRow>& rows) {
   std::map<std::string, std::map<std::string, std::size_t>> counts;
   for (const auto& r : rows) ++counts[r.kernel][std::string(verdict_name(r.verdict))];
@@ -81,6 +128,10 @@ int run_command(const RunArgs& a, const std::string& command_line) {
   po.seeds = a.seeds;
   po.base_seed = a.base_seed;
   po.generators = a.generators;
+  if (!a.cases.empty()) {
+    set_user_cases(a.cases);
+    if (po.generators.empty()) po.generators = {"cases"};
+  }
   const std::vector<CaseSpec> plan = plan_sweep(po);
 
   Shard shard;
@@ -94,14 +145,21 @@ int run_command(const RunArgs& a, const std::string& command_line) {
   RunOptions o;
   if (a.kernels.empty()) {
     for (const auto k : mk::kernel_names()) o.kernels.emplace_back(k);
+    if (!a.no_peers) {
+      for (const auto p : peer_names()) o.kernels.emplace_back(p);
+    }
   } else {
     for (const auto& k : a.kernels) {
-      bool known = false;
+      bool known = is_peer(k);
       for (const auto n : mk::kernel_names()) known = known || n == k;
-      if (!known) throw CLI::ValidationError("--kernels", "kernel '" + k + "' is not built into this library");
+      if (!known) throw CLI::ValidationError("--kernels", "back end '" + k + "' is not built into this binary (see `list`)");
       o.kernels.push_back(k);
     }
   }
+  // Peers run on every external case; on generated cases the default sweep samples them
+  // (every 4th case, inputs up to 2000 vertices), --full runs them all.
+  o.peer_every = a.peer_every > 0 ? a.peer_every : a.full ? 1 : 4;
+  o.peer_max_size = a.full ? 0 : 2000;
   o.jobs = std::max(1, a.jobs);
   o.timeout_seconds = a.timeout > 0 ? a.timeout : (a.quick ? 20 : a.full ? 300 : 60);
   o.memory_mb = a.memory_mb > 0 ? a.memory_mb : default_memory_mb(o.jobs);
@@ -151,7 +209,11 @@ int run_command(const RunArgs& a, const std::string& command_line) {
           << stats.rows << " runs in " << stats.seconds << " s wall time with " << o.jobs << " jobs on "
           << std::thread::hardware_concurrency() << " hardware threads; time limit " << o.timeout_seconds
           << " s per run\n"
+          << "peers: on every external case; on generated cases with index divisible by " << o.peer_every
+          << (o.peer_max_size > 0 ? " and at most " + std::to_string(o.peer_max_size) + " input vertices" : std::string())
+          << ", regular operations\n"
           << "finished: " << utc_now() << "\n";
+    for (const auto& l : environment_lines()) sweep << l << "\n";
   }
   std::cout << "verdicts:\n";
   print_counts(rows);
@@ -217,17 +279,20 @@ int merge_command(const std::vector<std::string>& dirs, std::string out, bool pl
   return 0;
 }
 
-int case_command(const CaseSpec& spec, const std::string& op_name, bool regular, const std::string& out) {
+int case_command(const CaseSpec& spec, const std::string& op_name, bool regular, const std::string& out, bool pictures) {
   const Case c = make_case(spec);
   const mk::Operation op = parse_operation(op_name);
   fs::create_directories(out);
-  const std::string stem = spec.stem() + "_" + op_name + (regular ? "" : "_nonregular");
+  // External cases are named by their id (a production case keeps its name as a test).
+  const std::string stem = (is_external_generator(spec.generator) ? spec.generator + "_" + spec.variant : spec.stem()) +
+                           "_" + op_name + (regular ? "" : "_nonregular");
   std::ofstream(fs::path(out) / (stem + ".wkt")) << regression_case_text(
       c.a, c.b, op, regular, {"generator=" + spec.generator + " variant=" + spec.variant + " params=" +
                                   spec.params_text() + " seed=" + std::to_string(spec.seed)});
   const ExactResult ref = exact_reference(c.a, c.b, op, regular, false);
   std::cout << (fs::path(out) / (stem + ".wkt")).string() << ": " << c.size() << " input vertices, exact result "
             << ref.cycles.size() << " polygons\n";
+  if (!pictures) return 0;
   for (const auto k : mk::kernel_names()) {
     std::string verdict, title = std::string(k) + ": ";
     std::optional<mk::Output> output;
@@ -259,7 +324,10 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "run a sweep, write DIR/results*.csv, failure artefacts and DIR/README.md");
   auto* quick = run->add_flag("--quick", ra.quick, "small sweep (under 2 minutes on 2 cores)");
   run->add_flag("--full", ra.full, "long sweep (hours; see experiments/README.md)")->excludes(quick);
-  run->add_option("--kernels", ra.kernels, "kernels to run (default: every kernel built)")->delimiter(',');
+  run->add_option("--kernels,--backends", ra.kernels, "back ends to run: kernels and peers (default: every one built)")->delimiter(',');
+  run->add_flag("--no-peers", ra.no_peers, "kernels only (no GEOS, Boost.Geometry, Clipper, CGAL)");
+  run->add_option("--peer-every", ra.peer_every, "run peers on every N-th generated case (default: 4; --full: 1)")->check(CLI::PositiveNumber);
+  run->add_option("--cases", ra.cases, "sweep your own pairs: JSON Lines of the batch format (id, op, a_wkt, b_wkt)")->check(CLI::ExistingFile);
   run->add_option("--generators", ra.generators, "generators to run (default: all; see `list`)")->delimiter(',');
   run->add_option("--seeds", ra.seeds, "random instances per configuration (default: by level)")->check(CLI::PositiveNumber);
   run->add_option("--seed", ra.base_seed, "base seed; every case seed derives from it")->capture_default_str();
@@ -289,16 +357,18 @@ int main(int argc, char** argv) {
   auto* list = app.add_subcommand("list", "list generators (with variants) and kernels");
 
   CaseSpec spec;
-  std::string case_params, case_op = "intersection", case_out = ".";
-  bool case_nonregular = false;
+  std::string case_params, case_op = "intersection", case_out = ".", case_file;
+  bool case_nonregular = false, case_no_pictures = false;
   auto* one = app.add_subcommand("case", "regenerate one case: regression case file and a picture per kernel");
   one->add_option("--generator", spec.generator, "generator name")->required();
   one->add_option("--variant", spec.variant, "variant name (CSV column variant)")->required();
   one->add_option("--params", case_params, "parameters as in the CSV, e.g. k=-3 or i=4;j=8");
-  one->add_option("--seed", spec.seed, "case seed (CSV column seed)")->required();
+  one->add_option("--seed", spec.seed, "case seed (CSV column seed; any value for reported and cases)");
   one->add_option("--op", case_op, "intersection, union, difference or xor")->capture_default_str();
   one->add_flag("--nonregular", case_nonregular, "non-regular operation");
   one->add_option("-o,--out", case_out, "output directory")->capture_default_str();
+  one->add_option("--cases", case_file, "JSON Lines file of generator `cases` (the case is --variant ID)")->check(CLI::ExistingFile);
+  one->add_flag("--no-pictures", case_no_pictures, "write the regression case file only");
 
   CLI11_PARSE(app, argc, argv);
   try {
@@ -316,12 +386,15 @@ int main(int argc, char** argv) {
       }
       std::cout << "kernels:";
       for (const auto k : mk::kernel_names()) std::cout << " " << k << (mk::is_exact_kernel(k) ? " (exact)" : "");
-      std::cout << "\n";
+      std::cout << "\npeers:";
+      for (const auto p : peer_names()) std::cout << " " << p;
+      std::cout << "\nreported corpus: " << reported_corpus().size() << " cases in " << reported_dir() << "\n";
       return 0;
     }
     if (*one) {
       spec.params = parse_params(case_params);
-      return case_command(spec, case_op, !case_nonregular, case_out);
+      if (!case_file.empty()) set_user_cases(case_file);
+      return case_command(spec, case_op, !case_nonregular, case_out, !case_no_pictures);
     }
   } catch (const CLI::Error& e) {
     return app.exit(e);

@@ -17,7 +17,8 @@ const std::vector<std::string_view>& csv_columns() {
       "case",         "generator",       "variant",   "params",          "seed",
       "size",         "op",              "regular",   "kernel",          "verdict",
       "area_error",   "symdiff_area",    "exact_area", "op_ns",          "predicate_calls",
-      "predicate_fallbacks", "vertices_in", "crossings", "vertices_out", "message"};
+      "predicate_fallbacks", "vertices_in", "crossings", "vertices_out", "message",
+      "rounding_bound", "oracle_agrees", "geos_valid", "exact_valid"};
   return cols;
 }
 
@@ -43,6 +44,14 @@ std::string opt(const std::optional<T>& v) {
   if (!v) return "";
   if constexpr (std::is_floating_point_v<T>) return number(*v);
   else return std::to_string(*v);
+}
+
+std::string flag(const std::optional<bool>& v) { return v ? (*v ? "true" : "false") : ""; }
+
+std::optional<bool> parse_flag(const std::string& s) {
+  if (s.empty()) return std::nullopt;
+  if (s != "true" && s != "false") throw std::runtime_error("not true or false: '" + s + "'");
+  return s == "true";
 }
 
 std::string csv_quoted(std::string_view s) {
@@ -105,7 +114,8 @@ std::string to_csv(const ResultRow& r) {
          ',' + r.kernel + ',' + std::string(verdict_name(r.verdict)) + ',' + opt(r.area_error) + ',' +
          opt(r.symdiff_area) + ',' + opt(r.exact_area) + ',' + opt(r.op_ns) + ',' + opt(r.predicate_calls) + ',' +
          opt(r.predicate_fallbacks) + ',' + opt(r.vertices_in) + ',' + opt(r.crossings) + ',' + opt(r.vertices_out) +
-         ',' + csv_quoted(r.message);
+         ',' + csv_quoted(r.message) + ',' + opt(r.rounding_bound) + ',' + flag(r.oracle_agrees) + ',' +
+         flag(r.geos_valid) + ',' + flag(r.exact_valid);
   return out;
 }
 
@@ -138,6 +148,10 @@ ResultRow parse_csv_row(std::string_view line) {
   r.crossings = parse_opt<std::int64_t>(f[17]);
   r.vertices_out = parse_opt<std::int64_t>(f[18]);
   r.message = f[19];
+  r.rounding_bound = parse_opt<double>(f[20]);
+  r.oracle_agrees = parse_flag(f[21]);
+  r.geos_valid = parse_flag(f[22]);
+  r.exact_valid = parse_flag(f[23]);
   return r;
 }
 

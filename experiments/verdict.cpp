@@ -23,6 +23,13 @@ std::string_view verdict_name(Verdict v) {
     case Verdict::timeout: return "timeout";
     case Verdict::crash: return "crash";
     case Verdict::invalid_input: return "invalid_input";
+    case Verdict::exact_area: return "exact_area";
+    case Verdict::rounding_only: return "rounding_only";
+    case Verdict::wrong: return "wrong";
+    case Verdict::exception: return "exception";
+    case Verdict::refused: return "refused";
+    case Verdict::unjudged: return "unjudged";
+    case Verdict::unsupported: return "unsupported";
   }
   return "?";
 }
@@ -31,10 +38,11 @@ std::optional<Verdict> parse_verdict(std::string_view name) {
   for (const Verdict v : all_verdicts) {
     if (verdict_name(v) == name) return v;
   }
+  for (const Verdict v : peer_verdicts) {
+    if (verdict_name(v) == name) return v;
+  }
   return std::nullopt;
 }
-
-namespace {
 
 mpq_class twice_signed_area(const std::vector<RationalPoint>& r) {
   mpq_class a = 0;
@@ -56,6 +64,8 @@ mpq_class typed_area(const std::vector<ExactCycle>& cycles) {
   }
   return total;
 }
+
+namespace {
 
 // A cycle as a comparable key: its type and its vertices from the lexicographically least
 // rotation (cycles have no distinguished start; their direction is part of the result).
@@ -146,8 +156,6 @@ ExactResult exact_reference(const Polygon& a, const Polygon& b, Operation op, bo
   return out;
 }
 
-namespace {
-
 // Whether the result's regions overlap at a vertex where rings meet. Every result cycle
 // has the region on one side (left when counterclockwise cycles are islands), so turning
 // counterclockwise around a vertex, each pass of a cycle has one edge where the turn enters
@@ -195,8 +203,6 @@ bool have_overlapping_sectors(const Output& output, bool region_left) {
   }
   return false;
 }
-
-}  // namespace
 
 bool is_valid_output(const Output& output, PolygonType ccw_type, std::string* why) {
   std::vector<std::vector<Point>> rings;

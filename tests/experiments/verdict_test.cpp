@@ -211,6 +211,9 @@ TEST(Results, TheSchemaIsDocumented) {
   for (const Verdict v : all_verdicts) {
     EXPECT_NE(doc.find("`" + std::string(verdict_name(v)) + "`"), std::string::npos) << verdict_name(v);
   }
+  for (const Verdict v : peer_verdicts) {
+    EXPECT_NE(doc.find("`" + std::string(verdict_name(v)) + "`"), std::string::npos) << verdict_name(v);
+  }
 }
 
 TEST(Artefacts, RegressionCasesRoundTrip) {
