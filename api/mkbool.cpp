@@ -4,7 +4,9 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -34,6 +36,36 @@ mpq_class sum_balanced(std::vector<mpq_class>& terms) {
     for (std::size_t i = 0; i + width < terms.size(); i += 2 * width) terms[i] += terms[i + width];
   }
   return std::move(terms[0]);
+}
+
+// The shoelace area of a rounded kernel's result, in doubles. Coordinates beyond 2^500 in
+// magnitude (or all below 2^-500) are first scaled by a power of two, which is exact, so
+// that the products neither overflow (inf - inf would be NaN) nor underflow to zero; the
+// sum is scaled back at the end, where an area beyond the largest double becomes +inf.
+double rounded_area(const Output& output) {
+  double largest = 0;
+  for (const auto& c : output.irreducible) {
+    for (const Point& p : c.vertices) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  }
+  const bool scale = largest > 0x1p500 || (largest > 0 && largest < 0x1p-500);
+  const int shift = scale ? -std::ilogb(largest) : 0;
+  double total = 0;
+  for (const auto& c : output.irreducible) {
+    if (c.vertices.size() < 3) continue;
+    double twice = 0;
+    const std::size_t n = c.vertices.size();
+    const auto at = [&](std::size_t i) {
+      const Point& p = c.vertices[i % n];
+      return scale ? Point{std::ldexp(p.x, shift), std::ldexp(p.y, shift)} : p;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point p = at(i);
+      const Point q = at(i + 1);
+      twice += p.x * q.y - q.x * p.y;
+    }
+    total += (c.type == PolygonType::island ? 0.5 : -0.5) * std::abs(twice);
+  }
+  return std::ldexp(total, -2 * shift) + 0.0;  // + 0.0: never -0
 }
 
 template <Kernel K>
@@ -74,22 +106,11 @@ BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
       }
       const mpq_class total = sum_balanced(cycle_areas);
       out.stats.area_exact = total.get_str();
-      out.stats.area = RationalKernel::to_nearest(total);
+      out.stats.area = RationalKernel::to_nearest(total) + 0.0;
     } else {
-      double total = 0;
-      for (const auto& c : out.output.irreducible) {
-        if (c.vertices.size() < 3) continue;
-        double twice = 0;
-        const std::size_t n = c.vertices.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          const auto& p = c.vertices[i];
-          const auto& q = c.vertices[(i + 1) % n];
-          twice += p.x * q.y - q.x * p.y;
-        }
-        total += (c.type == PolygonType::island ? 0.5 : -0.5) * std::abs(twice);
-      }
-      out.stats.area = total;
+      out.stats.area = rounded_area(out.output);
     }
+    out.stats.area_beyond_double = std::isinf(*out.stats.area);
   }
   return out;
 }

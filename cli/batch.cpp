@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <new>
 #include <optional>
 #include <string_view>
@@ -97,7 +98,9 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
   out["kernel"] = r.stats.kernel;
   out["valid"] = is_output_valid(r.output);
   out["op_ns"] = r.stats.op_ns;
-  out["area"] = r.stats.area ? Json(*r.stats.area) : Json(nullptr);
+  // JSON has no infinity: an area beyond the largest double is null and flagged.
+  out["area"] = r.stats.area && std::isfinite(*r.stats.area) ? Json(*r.stats.area) : Json(nullptr);
+  out["area_beyond_double"] = r.stats.area_beyond_double;
   out["area_exact"] = r.stats.area_exact ? Json(*r.stats.area_exact) : Json(nullptr);
   // Inputs of WKT are islands, so the result is bounded; the check keeps that an invariant.
   if (r.output.unbounded) throw CaseError{"the result is unbounded and has no WKT form"};
@@ -134,9 +137,11 @@ std::size_t run_batch(const BatchOptions& options) {
     if (is_blank(raw)) continue;
 
     // Every key in its place from the start, so that the lines have one shape.
-    Json result = {{"id", nullptr},     {"op", nullptr},         {"kernel", kernel}, {"result_wkt", nullptr},
-                   {"area", nullptr},   {"area_exact", nullptr}, {"valid", nullptr}, {"op_ns", nullptr},
-                   {"line", line_number}};
+    Json result = {{"id", nullptr},         {"op", nullptr},
+                   {"kernel", kernel},       {"result_wkt", nullptr},
+                   {"area", nullptr},        {"area_beyond_double", nullptr},
+                   {"area_exact", nullptr},  {"valid", nullptr},
+                   {"op_ns", nullptr},       {"line", line_number}};
     try {
       run_case(raw, options, result);
     } catch (const CaseError& e) {
@@ -151,7 +156,7 @@ std::size_t run_batch(const BatchOptions& options) {
     }
     if (result.contains("error")) {
       // A failed case reports no partial result.
-      for (const char* key : {"result_wkt", "area", "area_exact", "valid", "op_ns"}) result[key] = nullptr;
+      for (const char* key : {"result_wkt", "area", "area_beyond_double", "area_exact", "valid", "op_ns"}) result[key] = nullptr;
     }
     out.write(result.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n");
   }

@@ -70,8 +70,9 @@ int parse_error(const CLI::App& app, const CLI::ParseError& e) {
 int run_batch_form(int argc, char** argv) {
   CLI::App app("Runs one Boolean operation per JSON line. Each input line is an object with \"id\",\n"
                "\"op\" (intersection, union, difference, symdifference or xor), \"a_wkt\" and \"b_wkt\";\n"
-               "each output line has id, op, kernel, result_wkt, area, area_exact, valid, op_ns,\n"
-               "line, and error when that case failed. A failed case never stops the batch.\n",
+               "each output line has id, op, kernel, result_wkt, area, area_beyond_double,\n"
+               "area_exact, valid, op_ns, line, and error when that case failed. A failed case\n"
+               "never stops the batch.\n",
                "mkbool batch");
   BatchOptions o;
   bool non_regular = false;

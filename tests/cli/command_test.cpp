@@ -120,7 +120,8 @@ TEST(cliCommand, StatsIsOneJsonLineWithTheDocumentedKeys) {
   ASSERT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line expected: " << r.err;
   const auto stats = nlohmann::json::parse(r.err);
   for (const char* key :
-       {"kernel", "op_ns", "vertices_in", "crossings", "vertices_out", "rounded_valid", "area", "area_exact"}) {
+       {"kernel", "op_ns", "vertices_in", "crossings", "vertices_out", "rounded_valid", "area", "area_beyond_double",
+        "area_exact"}) {
     EXPECT_TRUE(stats.contains(key)) << key;
   }
   EXPECT_EQ(stats["kernel"], std::string(default_kernel()));
@@ -131,6 +132,7 @@ TEST(cliCommand, StatsIsOneJsonLineWithTheDocumentedKeys) {
   EXPECT_EQ(stats["vertices_out"], 4);
   EXPECT_EQ(stats["rounded_valid"], true);
   EXPECT_EQ(stats["area"], 1.0);
+  EXPECT_EQ(stats["area_beyond_double"], false);
   EXPECT_EQ(stats["area_exact"], "1");
 
   const ProcessResult inexact = run_mkbool({"intersection", square_a, square_b, "--stats", "--kernel", "double"});
