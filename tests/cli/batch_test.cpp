@@ -155,6 +155,49 @@ TEST(cliBatch, FileInputAndAtomicOutput) {
   EXPECT_NE(directory.err.find("is a directory"), std::string::npos);
 }
 
+TEST(cliBatch, MillionLevelNestingNeverStopsTheBatch) {
+  // issue 10, item 2: 100,000 nested arrays in an ignored member overflowed the stack while
+  // the line was parsed (ordered_json copies its values when an object grows). Each deep
+  // line sits between good ones: ignored members of any depth are fine, an id deeper than
+  // 1000 levels or a deep value where a string belongs is that line's error, an unclosed
+  // one is malformed JSON.
+  constexpr std::size_t n = 1'000'000;
+  const std::string arrays = std::string(n, '[') + std::string(n, ']');
+  const std::string objects = [&] {
+    std::string s;
+    for (std::size_t i = 0; i < n; ++i) s += "{\"a\":";
+    return s + "1" + std::string(n, '}');
+  }();
+  const std::string rest = "\"op\":\"union\",\"a_wkt\":\"" + square_a + "\",\"b_wkt\":\"" + square_b + "\"";
+  const std::string input = "{\"x\":" + arrays + ",\"id\":1," + rest + ",\"y\":" + objects + "}\n" +  //
+                            "{\"id\":" + arrays + "," + rest + "}\n" +                                     //
+                            "{\"id\":3,\"op\":" + objects + ",\"a_wkt\":\"" + square_a + "\"}\n" +     //
+                            std::string(n, '[') + "\n" +                                                    //
+                            "{\"id\":5,\"op\":\"union\",\"a_wkt\":" + arrays + "," + rest.substr(rest.find("\"b_wkt")) + "}\n" +
+                            "{\"id\":" + std::string(1000, '[') + std::string(1000, ']') + "," + rest + "}\n" +
+                            case_line(7, "union", square_a, square_b);
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 7u) << r.out.substr(0, 2000);
+  const char* errors[] = {nullptr, "\"id\" nests deeper than 1000 levels", "\"op\" is not a string",
+                          "malformed JSON", "\"a_wkt\" is not a string", nullptr, nullptr};
+  for (std::size_t i = 0; i < 7; ++i) {
+    EXPECT_EQ(lines[i]["line"], i + 1);
+    if (errors[i] == nullptr) {
+      EXPECT_FALSE(lines[i].contains("error")) << lines[i].dump().substr(0, 300);
+      EXPECT_EQ(lines[i]["area_exact"], "7");
+    } else {
+      ASSERT_TRUE(lines[i].contains("error")) << lines[i].dump().substr(0, 300);
+      EXPECT_NE(lines[i]["error"].get<std::string>().find(errors[i]), std::string::npos) << lines[i]["error"];
+    }
+  }
+  EXPECT_EQ(lines[0]["id"], 1);
+  EXPECT_EQ(lines[6]["id"], 7);
+  // The 1000-level id is echoed whole.
+  EXPECT_EQ(lines[5]["id"].dump(), std::string(1000, '[') + std::string(1000, ']'));
+}
+
 TEST(cliBatch, EmptyBatchWritesNothing) {
   const ProcessResult r = run_mkbool({"batch", "-"}, "");
   EXPECT_EQ(r.exit_code, 0) << describe(r);

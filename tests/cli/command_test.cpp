@@ -263,3 +263,29 @@ TEST(cliCommand, DeviceTargetIsWrittenInPlace) {
 
 }  // namespace
 }  // namespace mk::test
+
+namespace mk::test {
+namespace {
+
+TEST(cliCommand, MillionLevelNestingInIgnoredMembersIsRead) {
+  // issue 10, item 2: the command reads JSON of any depth without recursion (batch did not).
+  constexpr std::size_t n = 1'000'000;
+  const std::string deep = std::string(n, '[') + std::string(n, ']');
+  TempDir dir;
+  const std::string geojson = dir.write(
+      "a.geojson", R"({"type":"Feature","properties":{"x":)" + deep +
+                       R"(},"geometry":{"type":"Polygon","coordinates":[[[0,0],[2,0],[2,2],[0,2],[0,0]]]}})");
+  const std::string native = dir.write("b.json", R"({"note":)" + deep + R"(,"rings":[[[1,1],[3,1],[3,3],[1,3]]]})");
+  const ProcessResult r = run_mkbool({"intersection", geojson, square_b});
+  EXPECT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_EQ(r.out, "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))\n");
+  // Native JSON has no ignored members: the deep one is refused by name, cleanly.
+  const ProcessResult strict = run_mkbool({"intersection", geojson, native});
+  EXPECT_EQ(strict.exit_code, 3) << describe(strict);
+  EXPECT_NE(strict.err.find("unknown member \"note\""), std::string::npos) << describe(strict);
+  const ProcessResult unclosed = run_mkbool({"intersection", "-", square_b}, std::string(n, '['));
+  EXPECT_EQ(unclosed.exit_code, 3) << describe(unclosed);
+}
+
+}  // namespace
+}  // namespace mk::test
