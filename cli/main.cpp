@@ -63,7 +63,7 @@ std::string kernel_help() {
 // its own codes; the command's contract is 2 for every usage error.
 int parse_error(const CLI::App& app, const CLI::ParseError& e) {
   if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
-  std::fprintf(stderr, "mkbool: error: %s\nRun 'mkbool --help' for usage.\n", e.what());
+  std::fprintf(stderr, "mkbool: error: %s (see mkbool --help)\n", e.what());
   return static_cast<int>(ExitCode::usage);
 }
 
@@ -105,14 +105,15 @@ int run_command_form(int argc, char** argv) {
   const std::map<std::string, Operation> ops{{"intersection", Operation::intersection},
                                              {"union", Operation::union_},
                                              {"difference", Operation::difference},
-                                             {"xor", Operation::symmetric_difference}};
+                                             {"xor", Operation::symmetric_difference},
+                                             {"symdifference", Operation::symmetric_difference}};
   const std::map<std::string, OutputFormat> formats{{"wkt", OutputFormat::wkt},
                                                     {"geojson", OutputFormat::geojson},
                                                     {"json", OutputFormat::native_json},
                                                     {"svg", OutputFormat::svg}};
   const std::map<std::string, PolygonType> types{{"island", PolygonType::island}, {"hole", PolygonType::hole}};
 
-  app.add_option("OP", op, "intersection, union, difference (A minus B) or xor")
+  app.add_option("OP", op, "intersection, union, difference (A minus B) or xor (also: symdifference)")
       ->required()
       ->check(CLI::IsMember(ops));
   app.add_option("A", o.a, "first polygon: file, '-' or inline WKT")->required();

@@ -1,10 +1,14 @@
 // mkbool-experiment: run robustness sweeps (generators x kernels x operations x regular x
 // seeds), merge shards, write the report, and reproduce single cases. [MK89 §3.3]
-// Preconditions: none; bad arguments exit with status 2 and a message.
+// Preconditions: none; every bad argument exits with status 2 and one line naming it.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -95,12 +99,7 @@ int run_command(const RunArgs& a, const std::string& command_line) {
   if (a.kernels.empty()) {
     for (const auto k : mk::kernel_names()) o.kernels.emplace_back(k);
   } else {
-    for (const auto& k : a.kernels) {
-      bool known = false;
-      for (const auto n : mk::kernel_names()) known = known || n == k;
-      if (!known) throw CLI::ValidationError("--kernels", "kernel '" + k + "' is not built into this library");
-      o.kernels.push_back(k);
-    }
+    o.kernels = a.kernels;  // checked while parsing
   }
   o.jobs = std::max(1, a.jobs);
   o.timeout_seconds = a.timeout > 0 ? a.timeout : (a.quick ? 20 : a.full ? 300 : 60);
@@ -245,6 +244,81 @@ int case_command(const CaseSpec& spec, const std::string& op_name, bool regular,
   return 0;
 }
 
+// --- argument checks: every bad argument is a usage error (exit 2) on one line ---------------
+
+constexpr int usage_exit = 2;
+
+int usage_error(const std::string& message) {
+  std::cerr << "mkbool-experiment: error: " << message << " (see mkbool-experiment --help)\n";
+  return usage_exit;
+}
+
+// A check that runs on the argument's text before CLI11 converts it, so that "-5" never
+// becomes 2^64 - 5 and the message says what is expected in words.
+CLI::Validator whole_number(std::uint64_t min, std::uint64_t max, const std::string& what) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        std::uint64_t v = 0;
+        const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        if (!digits || r.ec != std::errc() || r.ptr != text.data() + text.size() || v < min || v > max) {
+          return "expected " + what + ", got '" + text + "'";
+        }
+        return {};
+      },
+      "", "whole_number");
+}
+
+CLI::Validator positive_seconds() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0;
+        const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !(v > 0) || !std::isfinite(v)) {
+          return "expected a positive number of seconds, got '" + text + "'";
+        }
+        return {};
+      },
+      "", "positive_seconds");
+}
+
+// A check that a function accepts the text (it throws std::invalid_argument otherwise).
+template <class F>
+CLI::Validator accepted_by(F&& f, const char* name) {
+  return CLI::Validator(
+      [f](std::string& text) -> std::string {
+        try {
+          f(text);
+        } catch (const std::invalid_argument& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "", name);
+}
+
+void check_kernel(const std::string& k) {
+  std::string known;
+  for (const auto n : mk::kernel_names()) {
+    if (n == k) return;
+    known += (known.empty() ? "" : ", ") + std::string(n);
+  }
+  throw std::invalid_argument("unknown kernel '" + k + "' (built: " + known + ")");
+}
+
+// The operation names of the command; symdifference is a synonym of xor everywhere.
+std::string operation_argument(const std::string& name) { return name == "symdifference" ? "xor" : name; }
+
+// Whether DIR holds results*.csv files (what report and merge read).
+bool has_results(const std::string& dir) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("results", 0) == 0 && e.path().extension() == ".csv") return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -257,14 +331,28 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "run a sweep, write DIR/results*.csv, failure artefacts and DIR/README.md");
   auto* quick = run->add_flag("--quick", ra.quick, "small sweep (under 2 minutes on 2 cores)");
   run->add_flag("--full", ra.full, "long sweep (hours; see experiments/README.md)")->excludes(quick);
-  run->add_option("--kernels", ra.kernels, "kernels to run (default: every kernel built)")->delimiter(',');
-  run->add_option("--generators", ra.generators, "generators to run (default: all; see `list`)")->delimiter(',');
-  run->add_option("--seeds", ra.seeds, "random instances per configuration (default: by level)")->check(CLI::PositiveNumber);
-  run->add_option("--seed", ra.base_seed, "base seed; every case seed derives from it")->capture_default_str();
-  run->add_option("--shard", ra.shard, "run only shard i of N (i/N, 0-based): every N-th case from i");
-  run->add_option("--jobs,-j", ra.jobs, "worker processes")->capture_default_str()->check(CLI::PositiveNumber);
-  run->add_option("--timeout", ra.timeout, "seconds per run before it counts as a timeout (default: 20 quick, 60, 300 full)");
-  run->add_option("--memory-mb", ra.memory_mb, "address-space limit per worker (default: 80% of RAM / jobs)");
+  const auto kernel_check = accepted_by(check_kernel, "kernel");
+  const auto generator_check = accepted_by([](const std::string& g) { find_generator(g); }, "generator");
+  run->add_option("--kernels", ra.kernels, "kernels to run (default: every kernel built)")
+      ->delimiter(',')
+      ->check(kernel_check);
+  run->add_option("--generators", ra.generators, "generators to run (default: all; see `list`)")
+      ->delimiter(',')
+      ->check(generator_check);
+  run->add_option("--seeds", ra.seeds, "random instances per configuration (default: by level)")
+      ->check(whole_number(1, 1'000'000, "a whole number of seeds from 1 to 1000000"));
+  run->add_option("--seed", ra.base_seed, "base seed; every case seed derives from it")
+      ->capture_default_str()
+      ->check(whole_number(0, UINT64_MAX, "a whole number from 0 to 2^64-1"));
+  run->add_option("--shard", ra.shard, "run only shard i of N (i/N, 0-based): every N-th case from i")
+      ->check(accepted_by([](const std::string& t) { parse_shard(t); }, "shard"));
+  run->add_option("--jobs,-j", ra.jobs, "worker processes")
+      ->capture_default_str()
+      ->check(whole_number(1, 1024, "a whole number of worker processes from 1 to 1024"));
+  run->add_option("--timeout", ra.timeout, "seconds per run before it counts as a timeout (default: 20 quick, 60, 300 full)")
+      ->check(positive_seconds());
+  run->add_option("--memory-mb", ra.memory_mb, "address-space limit per worker (default: 80% of RAM / jobs)")
+      ->check(whole_number(1, UINT64_MAX >> 20, "a whole number of megabytes, at least 1"));
   run->add_flag("--no-artefacts", ra.no_artefacts, "skip failure pictures and regression cases");
   run->add_flag("--no-report", ra.no_report, "skip the report");
   run->add_flag("--no-plots", ra.no_plots, "report without running the plot script");
@@ -290,15 +378,53 @@ int main(int argc, char** argv) {
   std::string case_params, case_op = "intersection", case_out = ".";
   bool case_nonregular = false;
   auto* one = app.add_subcommand("case", "regenerate one case: regression case file and a picture per kernel");
-  one->add_option("--generator", spec.generator, "generator name")->required();
+  one->add_option("--generator", spec.generator, "generator name")->required()->check(generator_check);
   one->add_option("--variant", spec.variant, "variant name (CSV column variant)")->required();
   one->add_option("--params", case_params, "parameters as in the CSV, e.g. k=-3 or i=4;j=8");
-  one->add_option("--seed", spec.seed, "case seed (CSV column seed)")->required();
-  one->add_option("--op", case_op, "intersection, union, difference or xor")->capture_default_str();
+  one->add_option("--seed", spec.seed, "case seed (CSV column seed)")
+      ->required()
+      ->check(whole_number(0, UINT64_MAX, "a whole number from 0 to 2^64-1"));
+  one->add_option("--op", case_op, "intersection, union, difference or xor (or symdifference)")
+      ->capture_default_str()
+      ->check(accepted_by([](const std::string& op) { parse_operation(operation_argument(op)); }, "operation"));
   one->add_flag("--nonregular", case_nonregular, "non-regular operation");
   one->add_option("-o,--out", case_out, "output directory")->capture_default_str();
 
-  CLI11_PARSE(app, argc, argv);
+  // CLI11's own exit codes (104-106) and multi-line messages become exit 2 and one line.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string first = argv[1];
+    bool known = false;
+    for (const auto* sub : app.get_subcommands({})) known = known || sub->get_name() == first;
+    if (!known) return usage_error("unknown command '" + first + "' (run, merge, report, list or case)");
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    return usage_error(e.what());
+  }
+  // Checks that need more than one argument, or a look at the file system.
+  if (*one) {
+    const auto& variants = find_generator(spec.generator).variants;
+    if (std::find(variants.begin(), variants.end(), spec.variant) == variants.end()) {
+      std::string known;
+      for (const auto v : variants) known += (known.empty() ? "" : ", ") + std::string(v);
+      return usage_error("--variant: generator " + spec.generator + " has no variant '" + spec.variant +
+                         "' (it has: " + known + ")");
+    }
+    try {
+      spec.params = parse_params(case_params);
+    } catch (const std::invalid_argument& e) {
+      return usage_error(std::string("--params: ") + e.what());
+    }
+    case_op = operation_argument(case_op);
+  }
+  if (*report && !has_results(report_dir)) {
+    return usage_error(report_dir + " holds no results*.csv; run `mkbool-experiment run -o " + report_dir + "` first");
+  }
+  if (*merge && std::none_of(merge_dirs.begin(), merge_dirs.end(), has_results)) {
+    return usage_error("none of the directories holds results*.csv files to merge");
+  }
   try {
     if (*run) return run_command(ra, command_line);
     if (*merge) return merge_command(merge_dirs, merge_out, !merge_no_plots);
@@ -317,10 +443,7 @@ int main(int argc, char** argv) {
       std::cout << "\n";
       return 0;
     }
-    if (*one) {
-      spec.params = parse_params(case_params);
-      return case_command(spec, case_op, !case_nonregular, case_out);
-    }
+    if (*one) return case_command(spec, case_op, !case_nonregular, case_out);
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

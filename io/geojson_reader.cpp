@@ -143,21 +143,21 @@ class GeoJsonReader {
       if (!position.is_array()) {
         fail(index_path(path, v), "expected a position [x, y], found " + json_type_name(position));
       }
-      if (position.size() != 2) {
-        fail(index_path(path, v),
-             position.size() > 2
-                 ? "position has " + std::to_string(position.size()) +
-                       " coordinates; altitude (Z) and further coordinates are not supported"
-                 : "position has " + std::to_string(position.size()) +
-                       " coordinates; expected [x, y]");
+      if (position.size() < 2) {
+        fail(index_path(path, v), "position has " + std::to_string(position.size()) +
+                                      " coordinates; expected [x, y] or [x, y, altitude]");
       }
+      // [RFC7946 §3.1.1] An altitude (and any further element) is allowed: it is checked like
+      // x and y, then dropped, since the operation is planar.
       Point p;
       std::string problem;
-      if (!io_detail::json_number_to_double(position[0], p.x, problem)) {
-        fail(index_path(index_path(path, v), 0), problem);
-      }
-      if (!io_detail::json_number_to_double(position[1], p.y, problem)) {
-        fail(index_path(index_path(path, v), 1), problem);
+      for (std::size_t k = 0; k < position.size(); ++k) {
+        double value = 0;
+        if (!io_detail::json_number_to_double(position[k], value, problem)) {
+          fail(index_path(index_path(path, v), k), problem);
+        }
+        if (k == 0) p.x = value;
+        if (k == 1) p.y = value;
       }
       ring.push_back(p);
     }

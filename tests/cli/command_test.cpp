@@ -67,12 +67,37 @@ TEST(cliCommand, UsageErrorsExitTwo) {
       {"intersection", square_a, square_b, "--no-such-option"},
       {"intersection", square_a, square_b, "extra"},
       {"batch"},
+      {"batch", "-", "--kernel", "magic"},
+      {"batch", "-", "--format", "wkt"},
+      {"intersection", square_a, square_b, "--kernel"},
+      {"intersection", square_a, square_b, "-o"},
   };
   for (const auto& args : cases) {
     const ProcessResult r = run_mkbool(args);
     EXPECT_EQ(r.exit_code, 2) << describe(r);
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(r.err.rfind("mkbool: error: ", 0), 0u) << describe(r);
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line expected\n" << describe(r);  // issue 10, item 5
+  }
+}
+
+TEST(cliCommand, SymdifferenceIsASynonymOfXor) {
+  const ProcessResult sym = run_mkbool({"symdifference", square_a, square_b});
+  const ProcessResult x = run_mkbool({"xor", square_a, square_b});
+  ASSERT_EQ(sym.exit_code, 0) << describe(sym);
+  EXPECT_EQ(sym.out, x.out);
+  EXPECT_EQ(sym.out, "MULTIPOLYGON (((0 0, 2 0, 2 1, 1 1, 1 2, 0 2, 0 0)), ((2 2, 2 1, 3 1, 3 3, 1 3, 1 2, 2 2)))\n");
+}
+
+TEST(cliCommand, ZCoordinatesAndAltitudesAreDropped) {
+  TempDir dir;
+  const std::string b = dir.write(
+      "b.geojson", R"({"type":"Polygon","coordinates":[[[1,1,10],[3,1,10],[3,3,12.5],[1,3,10],[1,1,10]]]})");
+  for (const std::string a : {"POLYGON Z ((0 0 1,2 0 1,2 2 1,0 2 1,0 0 1))", "POLYGON ((0 0 1,2 0 1,2 2 1,0 2 1,0 0 1))",
+                              "POLYGON ZM ((0 0 1 7,2 0 1 7,2 2 1 7,0 2 1 7,0 0 1 7))"}) {
+    const ProcessResult r = run_mkbool({"intersection", a, b});
+    EXPECT_EQ(r.exit_code, 0) << a << "\n" << describe(r);
+    EXPECT_EQ(r.out, "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))\n") << a;
   }
 }
 
