@@ -17,6 +17,7 @@
 #include "cli/output_file.hpp"
 #include "cli/stats.hpp"
 #include "io/file.hpp"
+#include "io/parts.hpp"
 #include "io/wkt.hpp"
 
 namespace mk::cli {
@@ -50,9 +51,13 @@ std::string member_string(const InputJson& line, const char* key) {
   return it->get<std::string>();
 }
 
+// Read and checked as the command reads WKT (io/parts.hpp): multi-part input is never
+// reinterpreted.
 Polygon read_case_polygon(const std::string& wkt, const char* key) {
   try {
-    return to_polygon(read_wkt(wkt));
+    PartNames names;
+    const MultiPolygon mp = read_wkt(wkt, &names.parts);
+    return to_checked_polygon(mp, names);
   } catch (const InvalidInput& e) {
     throw CaseError{std::string(key) + ": " + e.what()};
   }

@@ -3,6 +3,7 @@
 // Preconditions: none; malformed input throws mk::InvalidInput naming the element's path.
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/geojson.hpp"
@@ -23,6 +24,8 @@ enum class Place { top, feature_member, feature_geometry, collection_member };
 
 class GeoJsonReader {
  public:
+  explicit GeoJsonReader(std::vector<std::string>* part_names) : part_names_(part_names) {}
+
   MultiPolygon read(const Json& root) {
     read_object(root, "", Place::top);
     return std::move(result_);
@@ -130,6 +133,7 @@ class GeoJsonReader {
       }
     }
     result_.push_back(std::move(polygon));
+    if (part_names_ != nullptr) part_names_->push_back(path);
   }
 
   static Ring read_ring(const Json& positions, const std::string& path) {
@@ -165,12 +169,13 @@ class GeoJsonReader {
   }
 
   MultiPolygon result_;
+  std::vector<std::string>* part_names_;
 };
 
 }  // namespace
 
-MultiPolygon read_geojson(std::string_view text) {
-  return GeoJsonReader().read(io_detail::parse_json(text, "GeoJSON"));
+MultiPolygon read_geojson(std::string_view text, std::vector<std::string>* part_names) {
+  return GeoJsonReader(part_names).read(io_detail::parse_json(text, "GeoJSON"));
 }
 
 }  // namespace mk

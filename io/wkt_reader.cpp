@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/ring_rules.hpp"
@@ -100,7 +101,7 @@ struct Where {
 
 class WktReader {
  public:
-  explicit WktReader(std::string_view text) : text_(text) {}
+  WktReader(std::string_view text, std::vector<std::string>* part_names) : text_(text), part_names_(part_names) {}
 
   MultiPolygon read() {
     if (text_.starts_with("\xEF\xBB\xBF")) pos_ = 3;  // UTF-8 byte order mark
@@ -322,6 +323,7 @@ class WktReader {
       where_.ring = -1;
     } while (next_in_list("',' or ')' after a ring"));
     result_.push_back(std::move(polygon));
+    if (part_names_ != nullptr) part_names_->push_back("polygon " + std::to_string(where_.polygon));
     where_.polygon = -1;
   }
 
@@ -373,10 +375,13 @@ class WktReader {
   int coordinates_ = 0;  // per vertex, once known: 2, 3 (Z or M) or 4 (ZM)
   Where where_;
   MultiPolygon result_;
+  std::vector<std::string>* part_names_;
 };
 
 }  // namespace
 
-MultiPolygon read_wkt(std::string_view text) { return WktReader(text).read(); }
+MultiPolygon read_wkt(std::string_view text, std::vector<std::string>* part_names) {
+  return WktReader(text, part_names).read();
+}
 
 }  // namespace mk

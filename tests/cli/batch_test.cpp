@@ -198,6 +198,27 @@ TEST(cliBatch, MillionLevelNestingNeverStopsTheBatch) {
   EXPECT_EQ(lines[5]["id"].dump(), std::string(1000, '[') + std::string(1000, ']'));
 }
 
+TEST(cliBatch, MultiPartCasesAreCheckedAsTheCommandChecksThem) {
+  // issue 10, item 4: the same square twice intersected to EMPTY; now that line is refused
+  // by name and the lines around it are answered.
+  const std::string twice = "MULTIPOLYGON(((0 0,10 0,10 10,0 10,0 0)),((0 0,10 0,10 10,0 10,0 0)))";
+  const std::string input = case_line(1, "union", square_a, square_b) + case_line(2, "intersection", twice, twice) +
+                            case_line(3, "union", square_a, "POLYGON((0 0,1 0,1 1,0 0),(5 5,6 5,6 6,5 5))") +
+                            case_line(4, "union", square_a, square_b);
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 4u) << r.out;
+  EXPECT_EQ(lines[0]["area_exact"], "7");
+  EXPECT_EQ(lines[1]["error"], "a_wkt: polygon 1 repeats polygon 0 (their shells are the same ring); the parts of a "
+                               "multi-part polygon must not overlap (read by nesting, the overlap would become a hole: "
+                               "merge the parts first)");
+  EXPECT_NE(lines[2]["error"].get<std::string>().find("b_wkt: polygon 0, ring 1 (a hole) lies outside its shell"),
+            std::string::npos)
+      << lines[2];
+  EXPECT_EQ(lines[3]["area_exact"], "7");
+}
+
 TEST(cliBatch, EmptyBatchWritesNothing) {
   const ProcessResult r = run_mkbool({"batch", "-"}, "");
   EXPECT_EQ(r.exit_code, 0) << describe(r);

@@ -2,7 +2,7 @@
 // stays a link, the file it names gets the output), in place into FIFOs and devices (never
 // replaced), keeping a replaced file's mode (and owner, as root), never leaving a temporary
 // file or a partial output behind. Everything happens inside a private temporary directory.
-// [MK89 §3.2] (the result of polygonoperation, delivered) [POSIX rename(2), symlink(7)]
+// [MK89 §3.2] (the result of polygonoperation, delivered) [POSIX] (rename, symbolic links)
 // Preconditions: the built mkbool (MK_CLI_EXE); POSIX (symlink, mkfifo).
 #include <gtest/gtest.h>
 
