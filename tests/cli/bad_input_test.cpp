@@ -155,6 +155,19 @@ TEST(cliBadInput, MultiPartInputIsNeverReinterpreted) {
   EXPECT_EQ(coverage.out, "POLYGON ((0 0, 10 0, 20 0, 20 10, 10 10, 0 10, 0 0))\n");
 }
 
+TEST(cliBadInput, HostileBytesAndNumbers) {
+  // Bytes that are no text at all, on standard input.
+  std::string garbage(4096, '\0');
+  for (std::size_t i = 0; i < garbage.size(); ++i) garbage[i] = static_cast<char>((i * 2654435761u) >> 13);
+  expect_invalid({"union", "-", square_b}, {"A (standard input): WKT line 1, column 1"}, garbage);
+  // A million digits: read, and refused as not representable.
+  TempDir dir;
+  expect_invalid_a(dir.write("big.wkt", "POLYGON((0 0,1" + std::string(1'000'000, '0') + " 0,0 1,0 0))"),
+                   {"x coordinate '1" + std::string(31, '0') + "...' is not representable as a double"});
+  expect_invalid_a("POLYGON((0 0,0x1p3 0,0 1,0 0))", {"malformed number '0x1p3'"});
+  expect_invalid_a(dir.path().string(), {"is a directory"});
+}
+
 TEST(cliBadInput, DuplicateConsecutiveVerticesAreAccepted) {
   const ProcessResult r = run_mkbool({"intersection", "POLYGON((0 0,2 0,2 0,2 0,2 2,0 2,0 2,0 0))", square_b});
   EXPECT_EQ(r.exit_code, 0) << describe(r);

@@ -219,6 +219,16 @@ TEST(cliBatch, MultiPartCasesAreCheckedAsTheCommandChecksThem) {
   EXPECT_EQ(lines[3]["area_exact"], "7");
 }
 
+TEST(cliBatch, InvalidUtf8IsThatLinesErrorAndTheOutputStaysUtf8) {
+  const std::string input = "{\"id\":\"\xff\xfe\",\"op\":\"union\"}\n" + case_line(2, "union", square_a, square_b);
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);  // nlohmann refuses invalid UTF-8: the output has none
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[0]["error"].get<std::string>().find("ill-formed UTF-8"), std::string::npos) << lines[0];
+  EXPECT_EQ(lines[1]["area_exact"], "7");
+}
+
 TEST(cliBatch, EmptyBatchWritesNothing) {
   const ProcessResult r = run_mkbool({"batch", "-"}, "");
   EXPECT_EQ(r.exit_code, 0) << describe(r);

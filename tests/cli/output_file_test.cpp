@@ -91,6 +91,19 @@ TEST(cliOutputFile, LinkLoopIsAClearError) {
   EXPECT_EQ(sorted(dir.entries()), (std::vector<std::string>{"a", "b"}));
 }
 
+TEST(cliOutputFile, ADirectoryOrAMissingDirectoryIsAClearError) {
+  TempDir dir;
+  fs::create_directory(dir.file("sub"));
+  const ProcessResult to_dir = run_to(dir.file("sub"));
+  EXPECT_EQ(to_dir.exit_code, 1) << describe(to_dir);
+  EXPECT_NE(to_dir.err.find("it is a directory"), std::string::npos) << describe(to_dir);
+  const ProcessResult missing = run_to(dir.file("none/out.wkt"));
+  EXPECT_EQ(missing.exit_code, 1) << describe(missing);
+  EXPECT_NE(missing.err.find("No such file or directory"), std::string::npos) << describe(missing);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"sub"});
+  EXPECT_TRUE(fs::is_empty(dir.file("sub")));
+}
+
 TEST(cliOutputFile, AReplacedFileKeepsItsMode) {
   TempDir dir;
   for (const mode_t mode : {mode_t{0600}, mode_t{0640}, mode_t{0755}}) {
