@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "api/mkbool.hpp"
+#include "experiments/arguments.hpp"
 #include "experiments/artefacts.hpp"
 #include "experiments/generators.hpp"
 #include "experiments/report.hpp"
@@ -24,6 +25,7 @@
 
 namespace fs = std::filesystem;
 using namespace mk::experiments;
+using namespace mk::experiments::arguments;
 
 namespace {
 
@@ -242,81 +244,6 @@ int case_command(const CaseSpec& spec, const std::string& op_name, bool regular,
     std::cout << "  " << k << ": " << verdict << " -> " << svg << "\n";
   }
   return 0;
-}
-
-// --- argument checks: every bad argument is a usage error (exit 2) on one line ---------------
-
-constexpr int usage_exit = 2;
-
-int usage_error(const std::string& message) {
-  std::cerr << "mkbool-experiment: error: " << message << " (see mkbool-experiment --help)\n";
-  return usage_exit;
-}
-
-// A check that runs on the argument's text before CLI11 converts it, so that "-5" never
-// becomes 2^64 - 5 and the message says what is expected in words.
-CLI::Validator whole_number(std::uint64_t min, std::uint64_t max, const std::string& what) {
-  return CLI::Validator(
-      [=](std::string& text) -> std::string {
-        std::uint64_t v = 0;
-        const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-        if (!digits || r.ec != std::errc() || r.ptr != text.data() + text.size() || v < min || v > max) {
-          return "expected " + what + ", got '" + text + "'";
-        }
-        return {};
-      },
-      "", "whole_number");
-}
-
-CLI::Validator positive_seconds() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        double v = 0;
-        const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !(v > 0) || !std::isfinite(v)) {
-          return "expected a positive number of seconds, got '" + text + "'";
-        }
-        return {};
-      },
-      "", "positive_seconds");
-}
-
-// A check that a function accepts the text (it throws std::invalid_argument otherwise).
-template <class F>
-CLI::Validator accepted_by(F&& f, const char* name) {
-  return CLI::Validator(
-      [f](std::string& text) -> std::string {
-        try {
-          f(text);
-        } catch (const std::invalid_argument& e) {
-          return e.what();
-        }
-        return {};
-      },
-      "", name);
-}
-
-void check_kernel(const std::string& k) {
-  std::string known;
-  for (const auto n : mk::kernel_names()) {
-    if (n == k) return;
-    known += (known.empty() ? "" : ", ") + std::string(n);
-  }
-  throw std::invalid_argument("unknown kernel '" + k + "' (built: " + known + ")");
-}
-
-// The operation names of the command; symdifference is a synonym of xor everywhere.
-std::string operation_argument(const std::string& name) { return name == "symdifference" ? "xor" : name; }
-
-// Whether DIR holds results*.csv files (what report and merge read).
-bool has_results(const std::string& dir) {
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("results", 0) == 0 && e.path().extension() == ".csv") return true;
-  }
-  return false;
 }
 
 }  // namespace
