@@ -4,7 +4,10 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -24,6 +27,30 @@ namespace mk {
 
 namespace {
 
+std::string point_text(const Point& p) {
+  char buf[64];
+  char* end = buf;
+  *end++ = '(';
+  end = std::to_chars(end, buf + sizeof buf, p.x == 0 ? 0.0 : p.x).ptr;
+  *end++ = ' ';
+  end = std::to_chars(end, buf + sizeof buf, p.y == 0 ? 0.0 : p.y).ptr;
+  *end++ = ')';
+  return std::string(buf, end);
+}
+
+// The core names crossing edges by ring and vertex indices; the end points make them easy to
+// find in the input.
+std::string crossing_message(const CrossingEdges& e, const Polygon& p) {
+  const auto edge = [&](const RingEdge& x) {
+    const Ring& ring = p.rings.at(static_cast<std::size_t>(x.ring));
+    return "ring " + std::to_string(x.ring) + "'s edge from vertex " + std::to_string(x.from) + " " +
+           point_text(ring.at(static_cast<std::size_t>(x.from))) + " to vertex " + std::to_string(x.to) + " " +
+           point_text(ring.at(static_cast<std::size_t>(x.to)));
+  };
+  return std::string("polygon ") + (e.polygon() == 0 ? "A" : "B") + ": " + edge(e.first()) + " crosses " +
+         edge(e.second()) + "; the edges of a polygon may touch but must not cross";
+}
+
 template <Kernel K>
 BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
   const Options opt{o.op, o.regular, o.sorted_ef ? EfOrganisation::sorted : EfOrganisation::hash,
@@ -33,7 +60,12 @@ BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
   auto ka = to_kernel_polygon<K>(a);
   auto kb = to_kernel_polygon<K>(b);
   const auto t0 = std::chrono::steady_clock::now();
-  const BooleanResult<K> r = boolean_op<K>(ka, kb, opt);
+  BooleanResult<K> r;
+  try {
+    r = boolean_op<K>(ka, kb, opt);
+  } catch (const CrossingEdges& e) {
+    throw CrossingEdges(e.polygon(), e.first(), e.second(), crossing_message(e, e.polygon() == 0 ? a : b));
+  }
   const auto t1 = std::chrono::steady_clock::now();
   BooleanOutput out;
   out.output = to_output<K, ExactKernel>(r, o.exact_coordinates);
@@ -51,6 +83,10 @@ BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
       }
     }
     if (o.area && !out.stats.area) out.stats.area = rounded_area(r);
+    if (out.stats.area) {
+      *out.stats.area += 0.0;  // never -0
+      out.stats.area_beyond_double = std::isinf(*out.stats.area);
+    }
   }
   return out;
 }

@@ -42,12 +42,14 @@ struct BooleanStats {
   std::size_t vertices_in = 0;
   std::size_t crossings = 0;
   std::size_t vertices_out = 0;
-  // Area of the result (regular part), correctly rounded to the nearest double (+inf when
-  // it exceeds the largest double); exact kernels also give it as a reduced rational "p/q"
-  // or integer "p". Empty when unbounded or not asked for (BooleanOptions::area,
-  // area_exact).
+  // Area of the result (regular part), correctly rounded to the nearest double; exact
+  // kernels also give it as a reduced rational "p/q" or integer "p". Empty when unbounded
+  // or not asked for (BooleanOptions::area, area_exact). An area larger than the largest
+  // double (coordinates beyond about 1.3e154 can make one) is +infinity, as IEEE rounding
+  // gives it, and area_beyond_double says so; area_exact still holds it exactly. Never NaN.
   std::optional<double> area;
   std::optional<std::string> area_exact;
+  bool area_beyond_double = false;
 };
 
 struct BooleanOutput {

@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
   register_kind<GmpFallback>();
   register_kind<Rational>();
   benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;  // a usage error, as everywhere
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

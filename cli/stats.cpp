@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <vector>
 
 #include "arithmetic/kernels/exact_kernel.hpp"
@@ -56,7 +57,10 @@ std::string stats_json(const BooleanOutput& result, const PredicateCounters& cou
   j["crossings"] = s.crossings;
   j["vertices_out"] = s.vertices_out;
   j["rounded_valid"] = result.output.rounded_valid ? nlohmann::ordered_json(*result.output.rounded_valid) : nullptr;
-  j["area"] = s.area ? nlohmann::ordered_json(*s.area) : nullptr;
+  // JSON has no infinity: an area beyond the largest double is null, with the flag saying
+  // why (null alone means unbounded or not computed).
+  j["area"] = s.area && std::isfinite(*s.area) ? nlohmann::ordered_json(*s.area) : nullptr;
+  j["area_beyond_double"] = s.area_beyond_double;
   j["area_exact"] = s.area_exact ? nlohmann::ordered_json(*s.area_exact) : nullptr;
   if constexpr (PredicateCounters::enabled) j["predicates"] = counters_json(counters);
   return j.dump();
