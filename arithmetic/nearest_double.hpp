@@ -33,15 +33,17 @@ class DoubleExponentRange {
 
 // The double nearest to q, ties to even; +-infinity when |q| rounds beyond the largest
 // double (|q| >= DBL_MAX + ulp/2), as IEEE 754 rounds.
-inline double nearest_double(const mpq_class& q) {
+inline double nearest_double(mpq_srcptr q) {
   const DoubleExponentRange range;
   mpfr_t x;
   mpfr_init2(x, 53);
-  const int inexact = mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
+  const int inexact = mpfr_set_q(x, q, MPFR_RNDN);
   mpfr_subnormalize(x, inexact, MPFR_RNDN);
   const double d = mpfr_get_d(x, MPFR_RNDN);  // exact: x is a double now
   mpfr_clear(x);
   return d;
 }
+
+inline double nearest_double(const mpq_class& q) { return nearest_double(q.get_mpq_t()); }
 
 }  // namespace mk
