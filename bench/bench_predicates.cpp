@@ -18,6 +18,8 @@
 #include "arithmetic/adaptive.hpp"
 #include "arithmetic/exact_reference.hpp"
 #include "arithmetic/interval_filter.hpp"
+#include "arithmetic/kernels/rational_kernel.hpp"
+#include "arithmetic/kernels/rational_mp_kernels.hpp"
 #include "arithmetic/mpfr_interval.hpp"
 #include "arithmetic/predicates_counters.hpp"
 #include "arithmetic/predicates_gmp.hpp"
@@ -231,6 +233,52 @@ void BM_OrientVectors(benchmark::State& state, int which) {
   report_stages<Kind>(state, mk::PredicateKind::orient_vectors);
 }
 
+// The rational kernel's predicates over each number type, on points converted once (as the
+// kernel holds them): the cost of exact evaluation by number type alone.
+template <class K>
+struct RationalKernelKind {
+  using Points = std::vector<std::array<typename K::Point, 4>>;
+  static const Points& points(int which) {
+    static std::array<Points, input_names.size()> cache;
+    Points& p = cache[static_cast<std::size_t>(which)];
+    if (p.empty()) {
+      for (const auto& v : inputs(which)) {
+        p.push_back({K::point({v[0], v[1]}), K::point({v[2], v[3]}), K::point({v[4], v[5]}), K::point({v[6], v[7]})});
+      }
+    }
+    return p;
+  }
+};
+
+template <class K>
+void BM_Orient2dRational(benchmark::State& state, int which) {
+  const auto& p = RationalKernelKind<K>::points(which);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(K::orient2d(p[i][0], p[i][1], p[i][2]));
+    i = (i + 1) % input_count;
+  }
+}
+
+template <class K>
+void BM_OrientVectorsRational(benchmark::State& state, int which) {
+  const auto& p = RationalKernelKind<K>::points(which);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(K::orient_vectors(p[i][0], p[i][1], p[i][2], p[i][3]));
+    i = (i + 1) % input_count;
+  }
+}
+
+template <class K>
+void register_rational_kernel(const char* name) {
+  for (int which = 0; which < static_cast<int>(input_names.size()); ++which) {
+    const std::string suffix = std::string("<") + name + ">/" + input_names[static_cast<std::size_t>(which)];
+    benchmark::RegisterBenchmark(("BM_Orient2d" + suffix).c_str(), BM_Orient2dRational<K>, which);
+    benchmark::RegisterBenchmark(("BM_OrientVectors" + suffix).c_str(), BM_OrientVectorsRational<K>, which);
+  }
+}
+
 template <class Kind>
 void register_kind() {
   for (int which = 0; which < static_cast<int>(input_names.size()); ++which) {
@@ -254,6 +302,9 @@ int main(int argc, char** argv) {
   register_kind<MpfrStage<256>>();
   register_kind<GmpFallback>();
   register_kind<Rational>();
+  register_rational_kernel<mk::RationalKernel>("RationalMpq");
+  register_rational_kernel<mk::RationalMpKernel>("RationalMp");
+  register_rational_kernel<mk::RationalCppKernel>("RationalCpp");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
