@@ -113,6 +113,10 @@ bool is_exact_kernel(std::string_view name) {
          name == ExactKernel::name;
 }
 
+bool is_number_type_variant(std::string_view name) {
+  return name == RationalMpKernel::name || name == RationalCppKernel::name;
+}
+
 BooleanOutput compute(const Polygon& a, const Polygon& b, const BooleanOptions& options) {
   const std::string_view name = options.kernel.empty() ? default_kernel() : std::string_view(options.kernel);
   if (name == ExactKernel::name) return run<ExactKernel>(a, b, options);
