@@ -46,7 +46,7 @@ template <>
 struct RationalNumber<boost::multiprecision::mpq_rational>
     : detail::BoostRationalNumber<boost::multiprecision::mpq_rational> {
   static constexpr std::string_view kernel_name = "rational-mp";
-  static double nearest(const boost::multiprecision::mpq_rational& a) { return nearest_double(a.backend().data()); }
+  static double nearest(const boost::multiprecision::mpq_rational& a) { return nearest_double(*a.backend().data()); }
 };
 
 template <>
