@@ -16,6 +16,7 @@
 #include "arithmetic/kernels/exact_kernel.hpp"
 #include "arithmetic/kernels/filtered_kernels.hpp"
 #include "arithmetic/kernels/rational_kernel.hpp"
+#include "arithmetic/kernels/rational_mp_kernels.hpp"
 #ifdef MK_WITH_CGAL
 #include "arithmetic/kernels/cgal_kernel.hpp"
 #endif
@@ -94,7 +95,8 @@ BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
 }  // namespace
 
 std::vector<std::string_view> kernel_names() {
-  return {ExactKernel::name, RationalKernel::name, AdaptiveKernel::name, IntervalKernel::name,
+  return {ExactKernel::name,      RationalKernel::name,  RationalMpKernel::name, RationalCppKernel::name,
+          AdaptiveKernel::name,   IntervalKernel::name,
 #ifdef MK_WITH_CGAL
           CgalKernel::name,
 #endif
@@ -103,12 +105,21 @@ std::vector<std::string_view> kernel_names() {
 
 std::string_view default_kernel() { return ExactKernel::name; }
 
-bool is_exact_kernel(std::string_view name) { return name == RationalKernel::name || name == ExactKernel::name; }
+bool is_exact_kernel(std::string_view name) {
+  return name == RationalKernel::name || name == RationalMpKernel::name || name == RationalCppKernel::name ||
+         name == ExactKernel::name;
+}
+
+bool is_number_type_variant(std::string_view name) {
+  return name == RationalMpKernel::name || name == RationalCppKernel::name;
+}
 
 BooleanOutput compute(const Polygon& a, const Polygon& b, const BooleanOptions& options) {
   const std::string_view name = options.kernel.empty() ? default_kernel() : std::string_view(options.kernel);
   if (name == ExactKernel::name) return run<ExactKernel>(a, b, options);
   if (name == RationalKernel::name) return run<RationalKernel>(a, b, options);
+  if (name == RationalMpKernel::name) return run<RationalMpKernel>(a, b, options);
+  if (name == RationalCppKernel::name) return run<RationalCppKernel>(a, b, options);
   if (name == AdaptiveKernel::name) return run<AdaptiveKernel>(a, b, options);
   if (name == IntervalKernel::name) return run<IntervalKernel>(a, b, options);
 #ifdef MK_WITH_CGAL

@@ -22,6 +22,9 @@ std::vector<std::string_view> kernel_names();
 // The kernel used when none is named: the fastest exact kernel built.
 std::string_view default_kernel();
 bool is_exact_kernel(std::string_view name);
+// Kernels that repeat another with a different number type (rational-mp, rational-cpp: the
+// rational kernel over Boost.Multiprecision's rationals): the same results, another cost.
+bool is_number_type_variant(std::string_view name);
 
 struct BooleanOptions {
   Operation op = Operation::intersection;
