@@ -48,6 +48,8 @@ Outcome run(const mk::fuzz::DecodedCase& c, const char* kernel) {
   options.op = c.op;
   options.regular = c.regular;
   options.kernel = kernel;
+  options.exact_coordinates = true;  // compared below
+  options.area_exact = true;
   try {
     const mk::BooleanOutput r = mk::compute(c.a, c.b, options);
     for (const auto& cycle : r.output.irreducible) o.cycles.push_back(canonical_cycle(cycle));
