@@ -13,6 +13,7 @@
 #include "arithmetic/kernels/exact_kernel.hpp"
 #include "arithmetic/kernels/filtered_kernels.hpp"
 #include "arithmetic/kernels/rational_kernel.hpp"
+#include "arithmetic/shoelace.hpp"
 #ifdef MK_WITH_CGAL
 #include "arithmetic/kernels/cgal_kernel.hpp"
 #endif
@@ -22,19 +23,6 @@
 namespace mk {
 
 namespace {
-
-// The exact sum of many rationals, added pairwise in a balanced tree. Crossing points have
-// pairwise different denominators, so the sum's denominator grows with every term: adding
-// the terms one by one costs time quadratic in their number (minutes at 1e5 crossings),
-// the tree costs a logarithmic number of passes of GMP's subquadratic arithmetic.
-// Consumes the terms.
-mpq_class sum_balanced(std::vector<mpq_class>& terms) {
-  if (terms.empty()) return 0;
-  for (std::size_t width = 1; width < terms.size(); width *= 2) {
-    for (std::size_t i = 0; i + width < terms.size(); i += 2 * width) terms[i] += terms[i + width];
-  }
-  return std::move(terms[0]);
-}
 
 template <Kernel K>
 BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
@@ -55,40 +43,23 @@ BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
   out.stats.crossings = r.stats.crossings;
   out.stats.vertices_out = r.stats.vertices_out;
   if (o.area && !r.unbounded) {
-    // Shoelace per area cycle, islands adding and holes subtracting.
+    // Islands add, holes subtract: exactly from the exact coordinates where there are some.
+    const auto is_island = [](const OutputIrreducible& c) { return c.type == PolygonType::island; };
     if constexpr (K::is_exact) {
-      std::vector<mpq_class> terms;
-      std::vector<mpq_class> cycle_areas;
-      for (const auto& c : out.output.irreducible) {
-        if (c.vertices.size() < 3) continue;
-        terms.clear();
-        const std::size_t n = c.vertices.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          const std::size_t j = (i + 1) % n;
-          const mpq_class xi(c.exact[2 * i]), yi(c.exact[2 * i + 1]), xj(c.exact[2 * j]), yj(c.exact[2 * j + 1]);
-          terms.push_back(xi * yj - xj * yi);
+      const auto exact_ring = [](const OutputIrreducible& c) {
+        std::vector<RationalPoint> ring;
+        ring.reserve(c.vertices.size());
+        for (std::size_t i = 0; i < c.vertices.size(); ++i) {
+          ring.push_back({mpq_class(c.exact[2 * i]), mpq_class(c.exact[2 * i + 1])});
         }
-        mpq_class a2 = sum_balanced(terms);
-        a2 = abs(a2) / 2;
-        cycle_areas.push_back(c.type == PolygonType::island ? a2 : mpq_class(-a2));
-      }
-      const mpq_class total = sum_balanced(cycle_areas);
+        return ring;
+      };
+      const mpq_class total = typed_area<mpq_class>(out.output.irreducible, exact_ring, is_island);
       out.stats.area_exact = total.get_str();
       out.stats.area = RationalKernel::to_nearest(total);
     } else {
-      double total = 0;
-      for (const auto& c : out.output.irreducible) {
-        if (c.vertices.size() < 3) continue;
-        double twice = 0;
-        const std::size_t n = c.vertices.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          const auto& p = c.vertices[i];
-          const auto& q = c.vertices[(i + 1) % n];
-          twice += p.x * q.y - q.x * p.y;
-        }
-        total += (c.type == PolygonType::island ? 0.5 : -0.5) * std::abs(twice);
-      }
-      out.stats.area = total;
+      const auto rounded_ring = [](const OutputIrreducible& c) -> const std::vector<Point>& { return c.vertices; };
+      out.stats.area = typed_area<double>(out.output.irreducible, rounded_ring, is_island);
     }
   }
   return out;

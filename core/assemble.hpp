@@ -10,24 +10,22 @@
 
 #include "core/arrangement.hpp"
 #include "core/step6_construct.hpp"
+#include "predicates/directions.hpp"
 
 namespace mk {
 
 namespace detail {
 
 // Whether direction c -> d lies strictly inside the counterclockwise sector from c -> a to
-// c -> b (a and b not in the same direction; d in neither's direction).
+// c -> b (a and b not in the same direction; d in neither's direction): the sector test of
+// predicates/directions.hpp over directions from c.
 template <Kernel K>
 bool is_in_sector(const typename K::Vertex& c, const typename K::Vertex& a, const typename K::Vertex& b,
                   const typename K::Vertex& d) {
-  const Sign ab = K::orient_vertices(c, a, b);
-  if (ab == Sign::positive) {
-    return K::orient_vertices(c, a, d) == Sign::positive && K::orient_vertices(c, d, b) == Sign::positive;
-  }
-  if (ab == Sign::negative) {
-    return !(K::orient_vertices(c, b, d) != Sign::negative && K::orient_vertices(c, d, a) != Sign::negative);
-  }
-  return K::orient_vertices(c, a, d) == Sign::positive;
+  using V = const typename K::Vertex*;
+  const auto cross = [&](V u, V w) { return K::orient_vertices(c, *u, *w); };
+  const auto same_way = [&](V u, V w) { return K::compare_vertices(*u, c) == K::compare_vertices(*w, c); };
+  return is_in_ccw_sweep<V>(&a, &b, &d, cross, same_way);
 }
 
 }  // namespace detail
