@@ -96,7 +96,7 @@ Q typed_result_area(const BooleanResult<RationalKernel>& r) {
 struct Tally {
   long operations = 0;
   long regular_vs_cgal = 0;
-  long nonregular_points = 0;
+  SampleCounts nonregular_points;
   long cgal_faults = 0;  // CGAL's result contradicted by the oracle, mkbool's confirmed
   std::map<std::string, long> per_family;
 };
@@ -225,7 +225,8 @@ TEST(Differential, ExactKernelsAgreeWithCgalEpeckAndTheMembershipOracle) {
   std::cout << tally.operations << " operations in " << seconds << " s: " << tally.regular_vs_cgal
             << " regular results equal to CGAL Epeck's (region and exact area), "
             << tally.operations - tally.regular_vs_cgal << " non-regular results checked at "
-            << tally.nonregular_points << " sample points; CGAL faults shown by the oracle: " << tally.cgal_faults
+            << tally.nonregular_points.points << " sample points (" << tally.nonregular_points.on_both_boundaries
+            << " on both inputs' boundaries); CGAL faults shown by the oracle: " << tally.cgal_faults
             << "\n";
   for (const auto& [family, n] : tally.per_family) std::cout << "  " << family << ": " << n << "\n";
   EXPECT_GE(tally.operations, operations);

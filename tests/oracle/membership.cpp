@@ -38,10 +38,14 @@ int orient(const QPoint& o, const QPoint& a, const QPoint& b) {
 
 bool is_between(const Q& lo, const Q& hi, const Q& v) { return lo <= hi ? lo <= v && v <= hi : hi <= v && v <= lo; }
 
-// p on the closed segment ab (the box first: it rejects most pairs without arithmetic).
+}  // namespace
+
+// The box first: it rejects most pairs without arithmetic.
 bool is_on_segment(const QPoint& a, const QPoint& b, const QPoint& p) {
   return is_between(a.x, b.x, p.x) && is_between(a.y, b.y, p.y) && orient(a, b, p) == 0;
 }
+
+namespace {
 
 bool boxes_meet(const QPoint& a, const QPoint& b, const QPoint& c, const QPoint& d) {
   const auto lo = [](const Q& u, const Q& v) -> const Q& { return u < v ? u : v; };
@@ -339,13 +343,16 @@ std::vector<QPoint> sample_points(const Region& a, const Region& b, const Region
 }
 
 std::string first_contradiction(Operation op, bool regular, const Region& a, const Region& b, const Region& result,
-                                const std::vector<QPoint>& samples, long* checked) {
+                                const std::vector<QPoint>& samples, SampleCounts* counts) {
   const std::vector<const Region*> regions{&a, &b, &result};
   for (const QPoint& p : samples) {
     const Neighbourhood n = neighbourhood(p, regions);
     const Location want = expected_from(op, regular, n, regions);
     const Location got = locate(n, regions, 2);
-    if (checked) ++*checked;
+    if (counts) {
+      ++counts->points;
+      if (n.on_rings[0] && n.on_rings[1]) ++counts->on_both_boundaries;
+    }
     const bool agree = regular ? got == want : (got != Location::outside) == (want != Location::outside);
     if (!agree) {
       return std::string(operation_name(op)) + (regular ? " regular" : " non-regular") + " at " + show(p) +

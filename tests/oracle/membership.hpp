@@ -77,11 +77,22 @@ Location expected_location(Operation op, bool regular, const Region& a, const Re
 std::vector<QPoint> sample_points(const Region& a, const Region& b, const Region& result, std::mt19937_64& rng,
                                   int random_count);
 
+// How many sample points were checked, and how many of them lie on both A's and B's rings
+// (where bugs live: shared vertices, overlapping edges, vertices on edges, crossings).
+struct SampleCounts {
+  long points = 0;
+  long on_both_boundaries = 0;
+};
+
 // The first sample point where the result's location contradicts the operation's
-// definition, described; empty when every sample agrees. `checked` counts the samples.
+// definition, described; empty when every sample agrees.
 std::string first_contradiction(Operation op, bool regular, const Region& a, const Region& b,
-                                const Region& result, const std::vector<QPoint>& samples, long* checked = nullptr);
+                                const Region& result, const std::vector<QPoint>& samples,
+                                SampleCounts* counts = nullptr);
 
 std::string show(const QPoint& p);
+
+// Whether p lies on the closed segment ab.
+bool is_on_segment(const QPoint& a, const QPoint& b, const QPoint& p);
 
 }  // namespace mk::oracle
