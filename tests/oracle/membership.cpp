@@ -120,6 +120,10 @@ QPoint point_in_sector(const QPoint& p, const Vec& d, const std::vector<const Re
 
 }  // namespace
 
+QPoint point_left_of(const QPoint& a, const QPoint& b, const std::vector<const Region*>& regions) {
+  return point_in_sector({(a.x + b.x) / 2, (a.y + b.y) / 2}, {a.y - b.y, b.x - a.x}, regions);
+}
+
 Region region_of(const BasicPolygon<QPoint>& p) { return {p.rings, p.type == PolygonType::hole}; }
 
 Region region_of(const Polygon& p) {

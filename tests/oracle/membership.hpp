@@ -50,6 +50,10 @@ struct Neighbourhood {
 };
 Neighbourhood neighbourhood(const QPoint& p, const std::vector<const Region*>& regions);
 
+// A point of the open face just left of segment a -> b at its midpoint (no ring of the
+// regions passes between them).
+QPoint point_left_of(const QPoint& a, const QPoint& b, const std::vector<const Region*>& regions);
+
 // Whether q, on no ring of r, lies in r's region.
 bool face_is_in(const Region& r, const QPoint& q);
 // The location of the neighbourhood's centre in region i of the neighbourhood.
