@@ -138,9 +138,15 @@ std::string check_regular(Operation op, const References& refs, const BooleanRes
 
 std::string check_operation(const Polygon& a, const Polygon& b, const References& refs, const Options& opt,
                             std::mt19937_64& rng, Tally& tally, const std::string& what) {
-  const auto r = boolean_op<RationalKernel>(a, b, opt);
-  const auto e = boolean_op<ExactKernel>(a, b, opt);
   ++tally.operations;
+  BooleanResult<RationalKernel> r;
+  BooleanResult<ExactKernel> e;
+  try {
+    r = boolean_op<RationalKernel>(a, b, opt);
+    e = boolean_op<ExactKernel>(a, b, opt);
+  } catch (const std::exception& ex) {
+    return std::string("mkbool failed: ") + ex.what();  // exact kernels never fail on inputs in the domain
+  }
   if (e.unbounded != r.unbounded || canonical_of(e) != canonical_of(r)) return "exact and rational differ";
   const Region result = result_region(r);
   if (opt.regular) {
