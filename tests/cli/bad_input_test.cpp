@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <string>
 
+#include "tests/cli/canonical_wkt.hpp"
 #include "tests/cli/cli_support.hpp"
 
 namespace mk::test {

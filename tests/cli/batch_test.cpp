@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "api/mkbool.hpp"
+#include "tests/cli/canonical_wkt.hpp"
 #include "tests/cli/cli_support.hpp"
 
 namespace mk::test {

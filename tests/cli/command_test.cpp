@@ -8,6 +8,7 @@
 #include <string>
 
 #include "api/mkbool.hpp"
+#include "tests/cli/canonical_wkt.hpp"
 #include "tests/cli/cli_support.hpp"
 
 namespace mk::test {
