@@ -9,32 +9,13 @@
 #include <iostream>
 
 #include "arithmetic/kernels/rational_kernel.hpp"
-#include "arithmetic/shoelace.hpp"
 #include "core/boolean_op.hpp"
 #include "tests/oracle/cgal_reference.hpp"
+#include "tests/oracle/checks.hpp"
 #include "tests/oracle/membership.hpp"
 
 namespace mk::oracle {
 namespace {
-
-Region result_region(const BooleanResult<RationalKernel>& r) {
-  Region out{{}, r.unbounded};
-  for (const auto& c : r.cycles) {
-    QRing ring;
-    for (const int v : c.vertices) ring.push_back(r.vertex(v));
-    out.rings.push_back(std::move(ring));
-  }
-  return out;
-}
-
-Q typed_result_area(const BooleanResult<RationalKernel>& r) {
-  const Region reg = result_region(r);
-  std::vector<std::size_t> index(r.cycles.size());
-  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
-  return typed_area<Q>(
-      index, [&](std::size_t i) -> const QRing& { return reg.rings[i]; },
-      [&](std::size_t i) { return r.cycles[i].type == PolygonType::island; });
-}
 
 // Two squares crossing, rotated by (3/5, 4/5) (times 5) and scaled by 2^k: exact doubles.
 Polygon rotated_square(double x0, double y0, double s, int k) {

@@ -49,7 +49,7 @@ References References::of(const Polygon& a, const Polygon& b) {
 namespace {
 
 template <class K>
-Region result_region(const BooleanResult<K>& r) {
+Region region_of_result(const BooleanResult<K>& r) {
   Region out;
   out.complement = r.unbounded;
   for (const auto& c : r.cycles) {
@@ -69,24 +69,13 @@ Region result_region(const BooleanResult<K>& r) {
 template <class K>
 std::vector<CanonicalCycle<std::pair<Q, Q>>> canonical_of(const BooleanResult<K>& r) {
   std::vector<CanonicalCycle<std::pair<Q, Q>>> out;
-  const Region reg = result_region(r);
+  const Region reg = region_of_result(r);
   for (std::size_t i = 0; i < r.cycles.size(); ++i) {
     auto& [type, vs] = out.emplace_back();
     type = r.cycles[i].type;
     for (const QPoint& p : reg.rings[i]) vs.push_back({p.x, p.y});
   }
   return canonical(std::move(out));
-}
-
-// The typed area of mkbool's result (islands add, holes subtract), which for an unbounded
-// result is minus the area of its complement.
-Q typed_result_area(const BooleanResult<RationalKernel>& r) {
-  const Region reg = result_region(r);
-  std::vector<std::size_t> index(r.cycles.size());
-  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
-  return typed_area<Q>(
-      index, [&](std::size_t i) -> const QRing& { return reg.rings[i]; },
-      [&](std::size_t i) { return r.cycles[i].type == PolygonType::island; });
 }
 
 // Compares mkbool's regular result with CGAL's; on a difference, the membership oracle
@@ -135,6 +124,19 @@ std::string check_regular(Operation op, const References& refs, const BooleanRes
 }
 
 }  // namespace
+
+Region result_region(const BooleanResult<RationalKernel>& r) { return region_of_result(r); }
+
+// The typed area of mkbool's result (islands add, holes subtract), which for an unbounded
+// result is minus the area of its complement.
+Q typed_result_area(const BooleanResult<RationalKernel>& r) {
+  const Region reg = region_of_result(r);
+  std::vector<std::size_t> index(r.cycles.size());
+  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
+  return typed_area<Q>(
+      index, [&](std::size_t i) -> const QRing& { return reg.rings[i]; },
+      [&](std::size_t i) { return r.cycles[i].type == PolygonType::island; });
+}
 
 std::string check_operation(const Polygon& a, const Polygon& b, const References& refs, const Options& opt,
                             std::mt19937_64& rng, Tally& tally, const std::string& what) {

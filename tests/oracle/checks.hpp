@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "arithmetic/kernels/rational_kernel.hpp"
 #include "core/boolean_op.hpp"
 #include "tests/oracle/cgal_reference.hpp"
 #include "tests/oracle/membership.hpp"
@@ -40,6 +41,12 @@ struct References {
 
   static References of(const Polygon& a, const Polygon& b);
 };
+
+// mkbool's result as a region of the paper's model (exact coordinates; unbounded: the
+// complement), and its typed area (islands add, holes subtract: for an unbounded result,
+// minus the area of its complement).
+Region result_region(const BooleanResult<RationalKernel>& r);
+Q typed_result_area(const BooleanResult<RationalKernel>& r);
 
 struct Tally {
   long operations = 0;
