@@ -22,20 +22,18 @@ struct Direction {
 
 // The sector test, written once for every kind of direction: whether d lies strictly inside
 // the counterclockwise sweep from `first` to `last`; when first and last point the same way
-// the sweep is the full turn less that direction. Decided from cross(u, v), the Sign of the
-// cross product u x v (positive when v lies less than half a turn counterclockwise of u),
-// and, for parallel u and v only, same_way(u, v).
-template <class D, class Cross, class SameWay>
-bool is_in_ccw_sweep(const D& first, const D& last, const D& d, Cross&& cross, SameWay&& same_way) {
-  const Sign fl = cross(first, last);
-  if (fl == Sign::positive) return cross(first, d) == Sign::positive && cross(d, last) == Sign::positive;
-  if (fl == Sign::negative) {
-    // More than half a turn: everything but the closed sweep from last to first.
-    return !(cross(last, d) != Sign::negative && cross(d, first) != Sign::negative);
-  }
-  const Sign fd = cross(first, d);
-  if (same_way(first, last)) return fd != Sign::zero || !same_way(first, d);
-  return fd == Sign::positive;  // half a turn
+// the sweep is the full turn less that direction. `compare(u, v)` orders directions by
+// angle, counterclockwise from any fixed reference direction (negative: u comes first;
+// zero: the same direction), which makes the sweep an interval of that order or the
+// complement of one.
+template <class D, class Compare>
+bool is_in_ccw_sweep(const D& first, const D& last, const D& d, Compare&& compare) {
+  const Sign fl = compare(first, last);
+  const Sign fd = compare(first, d);
+  if (fl == Sign::zero) return fd != Sign::zero;
+  const Sign dl = compare(d, last);
+  if (fl == Sign::negative) return fd == Sign::negative && dl == Sign::negative;
+  return fd == Sign::negative || dl == Sign::negative;
 }
 
 template <Kernel K>
@@ -61,15 +59,9 @@ class DirectionOrder {
   }
 
   // Whether d lies strictly inside the counterclockwise sweep from `first` to `last`
-  // (is_in_ccw_sweep below). A pair of points compared with itself or its reverse is
-  // parallel without a predicate: proving a zero determinant takes the slowest exact stage.
+  // (is_in_ccw_sweep, in the order of `compare`).
   bool is_in_ccw_sector(Direction first, Direction last, Direction d) const {
-    const auto cross = [&](Direction a, Direction b) {
-      if (a == b || a == b.reversed()) return Sign::zero;
-      return K::orient_vectors(points_[a.from], points_[a.to], points_[b.from], points_[b.to]);
-    };
-    const auto same_way = [&](Direction a, Direction b) { return a == b || is_upper(a) == is_upper(b); };
-    return is_in_ccw_sweep(first, last, d, cross, same_way);
+    return is_in_ccw_sweep(first, last, d, [this](Direction u, Direction v) { return compare(u, v); });
   }
 
   // Signed turn from direction a to direction b, counted in whole crossings of angle 0:
