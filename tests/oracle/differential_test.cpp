@@ -6,7 +6,8 @@
 // [BRIEF §1] [BRIEF §3] (exact kernels agree on every input) [MK89 §3.1]
 // Preconditions: CGAL 5.5 (Debian 12). Environment: MK_ORACLE_SEED (a number, or "random"),
 // MK_ORACLE_OPERATIONS (how many operations to check; default 12000 in Release, fewer under
-// the sanitizers: see kDefaultOperations).
+// the sanitizers: see kDefaultOperations); for debugging, MK_ORACLE_VERBOSE (print each
+// pair before it runs) and MK_ORACLE_GRID (the same pairs left on their integer grid).
 #include <gtest/gtest.h>
 
 #include <chrono>
