@@ -197,10 +197,16 @@ int run_command(const RunArgs& a, const std::string& command_line) {
     if (!suffix.empty()) fs::rename(fs::path(a.out) / "artefacts.csv", fs::path(a.out) / ("artefacts" + suffix + ".csv"));
     std::cerr << "mkbool-experiment: " << n_art << " failure artefacts (pictures, regression cases) in "
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+    bool any_case = false;
     for (const auto& art : arts) {
       if (art.kind != Artefact::Kind::regression_case) continue;
       const bool core = art.path.find("inconsistency_") != std::string::npos;
       std::cerr << (core ? "  reference inconsistency: " : "  exact-kernel failure: ") << art.path << "\n";
+      any_case = true;
+    }
+    if (any_case) {
+      std::cerr << "  to keep them as tests: cp " << (fs::path(a.out) / "regression").string()
+                << "/*.wkt tests/regression/cases/ (tests/regression replays every case there)\n";
     }
   }
   {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "api/mkbool.hpp"
+#include "tests/cli/canonical_wkt.hpp"
 #include "tests/cli/cli_support.hpp"
 
 namespace mk::test {
@@ -26,7 +27,7 @@ TEST(cliCommand, EveryOperation) {
   for (const auto& [op, expected] : cases) {
     const ProcessResult r = run_mkbool({op, square_a, square_b});
     EXPECT_EQ(r.exit_code, 0) << op << "\n" << describe(r);
-    EXPECT_EQ(r.out, expected) << op;
+    EXPECT_EQ(canonical_wkt(r.out), canonical_wkt(expected)) << op;
     EXPECT_EQ(r.err, "") << op;
   }
 }
@@ -42,13 +43,13 @@ TEST(cliCommand, InputsFromFilesStandardInputAndInlineText) {
   for (const auto& b : {geojson, native, sniffed, square_b}) {
     const ProcessResult r = run_mkbool({"intersection", wkt, b});
     EXPECT_EQ(r.exit_code, 0) << b << "\n" << describe(r);
-    EXPECT_EQ(r.out, expected) << b;
+    EXPECT_EQ(canonical_wkt(r.out), canonical_wkt(expected)) << b;
   }
   const ProcessResult from_stdin = run_mkbool({"intersection", "-", geojson}, square_a);
   EXPECT_EQ(from_stdin.exit_code, 0) << describe(from_stdin);
-  EXPECT_EQ(from_stdin.out, expected);
+  EXPECT_EQ(canonical_wkt(from_stdin.out), canonical_wkt(expected));
   const ProcessResult json_stdin = run_mkbool({"intersection", wkt, "-"}, read_text(native));
-  EXPECT_EQ(json_stdin.out, expected) << describe(json_stdin);
+  EXPECT_EQ(canonical_wkt(json_stdin.out), canonical_wkt(expected)) << describe(json_stdin);
 }
 
 TEST(cliCommand, TwoStandardInputsIsAUsageError) {
@@ -118,7 +119,7 @@ TEST(cliCommand, EveryKernelSucceeds) {
     EXPECT_EQ(stats["kernel"], std::string(k));
     // Rounded kernels' results are data for the experiments, not asserted (STYLE.md).
     if (is_exact_kernel(k)) {
-      EXPECT_EQ(r.out, "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))\n") << k;
+      EXPECT_EQ(canonical_wkt(r.out), canonical_wkt("POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))")) << k;
       EXPECT_EQ(stats["area_exact"], "1") << k;
     }
   }
@@ -203,7 +204,7 @@ TEST(cliCommand, HoleTypesFromTheCommandLine) {
   // A as a hole: B minus the square A's interior... as the intersection of B with A's complement.
   const ProcessResult r = run_mkbool({"intersection", square_a, square_b, "--a-type", "hole"});
   EXPECT_EQ(r.exit_code, 0) << describe(r);
-  EXPECT_EQ(r.out, "POLYGON ((2 1, 3 1, 3 3, 1 3, 1 2, 2 2, 2 1))\n");
+  EXPECT_EQ(canonical_wkt(r.out), canonical_wkt("POLYGON ((2 1, 3 1, 3 3, 1 3, 1 2, 2 2, 2 1))"));
 }
 
 TEST(cliCommand, UnboundedResultAsWktOrGeoJsonSuggestsJson) {
@@ -249,7 +250,7 @@ TEST(cliCommand, OutputFileIsWrittenWhole) {
   const ProcessResult r = run_mkbool({"intersection", square_a, square_b, "-o", out});
   EXPECT_EQ(r.exit_code, 0) << describe(r);
   EXPECT_EQ(r.out, "");
-  EXPECT_EQ(read_text(out), "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))\n");
+  EXPECT_EQ(canonical_wkt(read_text(out)), canonical_wkt("POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))"));
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"result.wkt"}) << "no temporary file left";
 }
 
