@@ -1,6 +1,7 @@
 // Tests of the sweep: a tiny sweep through the library and through the mkbool-experiment
 // binary (CSV with the documented columns, the report, exact kernels only exact_match),
-// and the worker pool's survival of a crashing and a hanging run. [MK89 §3.3]
+// the user's own cases (run --cases, case --generator cases), and the worker pool's survival
+// of a crashing and a hanging run. [MK89 §3.3]
 // Preconditions: MK_EXPERIMENT_BIN names the built mkbool-experiment; a writable temp directory.
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -10,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <thread>
 
 #include "api/mkbool.hpp"
@@ -160,6 +162,48 @@ TEST(Sweep, BinaryWritesTheCsvAndTheReport) {
   fs::remove(dir / "README.md");
   ASSERT_EQ(run("report --no-plots " + dir.string()), 0);
   EXPECT_TRUE(fs::exists(dir / "README.md"));
+  fs::remove_all(dir);
+}
+
+TEST(Sweep, UserCasesRunEveryBackEndAndBecomeRegressionCasesInOneStep) {
+  // experiments/README.md, "Your own cases": run --cases sweeps the user's pairs through
+  // every back end; case --generator cases writes one as a regression case file.
+  const fs::path dir = fresh_dir("user_cases");
+  const fs::path file = dir / "prod.jsonl";
+  std::ofstream(file) << R"J({"id":"overlap","op":"union","a_wkt":"POLYGON((0 0,2 0,2 2,0 2,0 0))",)J"
+                      << R"J("b_wkt":"POLYGON((1 1,3 1,3 3,1 3,1 1))","note":"ignored"})J" "\n"
+                      << R"J({"op":"difference","a_wkt":"POLYGON((0 0,4 0,4 4,0 4,0 0))",)J"
+                      << R"J("b_wkt":"POLYGON((4 1,6 1,6 3,4 3,4 1))"})J" "\n";
+  const fs::path out = dir / "out";
+  ASSERT_EQ(run("run --cases " + file.string() + " --jobs 1 --no-artefacts --no-plots -o " + out.string()), 0);
+  const auto rows = read_results_dir(out.string());
+  std::set<std::string> variants, back_ends;
+  for (const auto& r : rows) {
+    EXPECT_EQ(r.generator, "cases") << to_csv(r);
+    variants.insert(r.variant);
+    back_ends.insert(r.kernel);
+  }
+  EXPECT_EQ(variants, (std::set<std::string>{"overlap", "line2"}));
+  for (const auto k : kernel_names()) EXPECT_EQ(back_ends.count(std::string(k)), is_number_type_variant(k) ? 0u : 1u) << k;
+  for (const auto p : peer_names()) EXPECT_EQ(back_ends.count(std::string(p)), 1u) << p;
+  expect_exact_kernels_match(rows);
+  std::ifstream md(out / "README.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), {});
+  EXPECT_NE(text.find("| overlap |"), std::string::npos);
+
+  const fs::path reg = dir / "regression";
+  ASSERT_EQ(run("case --generator cases --cases " + file.string() + " --variant overlap --op union --no-pictures -o " +
+                reg.string()),
+            0);
+  std::ifstream in(reg / "cases_overlap_union.wkt");
+  ASSERT_TRUE(in) << "no regression case file written";
+  const std::string written((std::istreambuf_iterator<char>(in)), {});
+  const RegressionCase c = read_regression_case(written);
+  EXPECT_EQ(c.op, Operation::union_);
+  EXPECT_TRUE(c.regular);
+  EXPECT_EQ(c.a.rings.size(), 1u);
+  EXPECT_EQ(c.b.rings.size(), 1u);
+  EXPECT_EQ(c.a.rings[0].size() + c.b.rings[0].size(), 8u);
   fs::remove_all(dir);
 }
 
