@@ -76,7 +76,7 @@ def fmt_ratio(r):
 
 def kernels_of(medians, errors):
     names = {k[0] for k in list(medians) + list(errors) if k[0].startswith("mkbool:")}
-    order = ["exact", "rational", "adaptive", "interval", "cgal", "double"]
+    order = ["exact", "rational", "rational-mp", "rational-cpp", "adaptive", "interval", "cgal", "double"]
     return sorted(names, key=lambda n: (order.index(n[7:]) if n[7:] in order else len(order), n))
 
 
