@@ -282,8 +282,9 @@ std::string library_report(const std::vector<ResultRow>& rows) {
 
   // Pairwise agreement on runs both judged.
   md << "## Agreement between back ends\n\nOn the runs both back ends ran and both were judged, the share where "
-        "they agree: both correct (exact or rounding only) or both failed. The last column counts runs where this "
-        "back end failed and every other judged back end was correct.\n\n";
+        "they agree: both correct (exact or rounding only) or both failed, with its 95% Wilson interval and the number "
+        "of runs. The last column counts runs where this back end failed and every other judged back end was "
+        "correct.\n\n";
   std::vector<std::string> agree_cols = backends;
   agree_cols.push_back("fails alone");
   header(md, "", agree_cols);
@@ -299,7 +300,7 @@ std::string library_report(const std::vector<ResultRow>& rows) {
         ++n;
         same += is_failure(ox) == is_failure(oy) ? 1 : 0;
       }
-      md << " " << (x == y || n == 0 ? std::string() : percent(static_cast<double>(same) / static_cast<double>(n)) + " of " + std::to_string(n)) << " |";
+      md << " " << (x == y || n == 0 ? std::string() : share_with_interval(same, n)) << " |";
     }
     std::size_t alone = 0;
     for (const auto& [key, m] : by_run) {

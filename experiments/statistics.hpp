@@ -49,4 +49,12 @@ inline std::string rate_with_interval(std::size_t k, std::size_t n) {
   return percent(static_cast<double>(k) / static_cast<double>(n)) + " (" + std::to_string(k) + ")" + interval;
 }
 
+// "96% [95%–97%] of 4544": a share of n without its count, for tables whose cells say what
+// they count; 100% and 0% keep their interval too.
+inline std::string share_with_interval(std::size_t k, std::size_t n) {
+  const auto [lo, hi] = wilson_interval(k, n);
+  return percent(static_cast<double>(k) / static_cast<double>(n)) + " [" + (lo == 0 ? std::string("0") : percent(lo)) +
+         "–" + percent(hi) + "] of " + std::to_string(n);
+}
+
 }  // namespace mk::experiments

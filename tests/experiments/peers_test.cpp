@@ -165,6 +165,28 @@ TEST(Oracle, AgreementFollowsTheCgalRowOfTheSameRun) {
   EXPECT_EQ(back.rounding_bound, r.rounding_bound);
 }
 
+TEST(Statistics, AgreementTableGivesEveryShareItsInterval) {
+  // Ten runs of one case each: exact always right, geos wrong on the first two; they agree
+  // on 8 of 10. Issue 15: a 95% Wilson interval on every rate in the report.
+  std::vector<ResultRow> rows;
+  for (std::uint64_t c = 0; c < 10; ++c) {
+    ResultRow k = row("exact", Verdict::exact_match);
+    k.case_index = c;
+    k.generator = "shared_edge";
+    ResultRow p = k;
+    p.kernel = "geos";
+    p.verdict = c < 2 ? Verdict::wrong : Verdict::exact_area;
+    rows.push_back(k);
+    rows.push_back(p);
+  }
+  const std::string md = library_report(rows);
+  const auto table = md.find("## Agreement between back ends");
+  ASSERT_NE(table, std::string::npos) << md;
+  EXPECT_NE(md.find("| exact |  | " + share_with_interval(8, 10) + " | 0 |", table), std::string::npos) << md.substr(table);
+  EXPECT_NE(md.find("| geos | " + share_with_interval(8, 10) + " |  | 2 |", table), std::string::npos) << md.substr(table);
+  EXPECT_EQ(share_with_interval(8, 10), "80% [49%–94%] of 10");
+}
+
 TEST(Outcome, OneScaleForKernelsAndPeers) {
   ResultRow r = row("double", Verdict::valid_different);
   r.symdiff_area = 1e-13;
