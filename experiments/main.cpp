@@ -19,6 +19,7 @@
 #include <gmp.h>
 
 #include "api/mkbool.hpp"
+#include "build_commit.hpp"
 #include "experiments/arguments.hpp"
 #include "experiments/artefacts.hpp"
 #include "experiments/external_cases.hpp"
@@ -91,10 +92,12 @@ std::string first_line_of(const std::string& command) {
 // What the sweep ran on: the commit, the libraries' versions, the compiler and the CPU.
 std::vector<std::string> environment_lines() {
   std::vector<std::string> out;
+  // The commit the binary was built from (build_commit.cmake), not the checkout's HEAD now:
+  // the two differ when the tree moved on since the build.
+  std::string commit = MK_BUILD_COMMIT;
   const std::string src = MK_EXPERIMENTS_SOURCE_DIR;
-  std::string commit = first_line_of("git -C '" + src + "' rev-parse --short=12 HEAD 2>/dev/null");
-  if (commit.empty()) commit = "unknown (not a git checkout)";
-  else if (!first_line_of("git -C '" + src + "' status --porcelain --untracked-files=no 2>/dev/null").empty()) commit += " (with uncommitted changes)";
+  const std::string now = first_line_of("git -C '" + src + "' rev-parse --short=12 HEAD 2>/dev/null");
+  if (!now.empty() && commit.compare(0, now.size(), now) != 0) commit += "; the source tree is now at " + now;
   out.push_back("commit: " + commit);
   std::string libs = std::string("GMP ") + gmp_version;
   for (const auto& v : peer_versions()) libs += ", " + v;

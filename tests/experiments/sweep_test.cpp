@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -204,6 +205,42 @@ TEST(Sweep, UserCasesRunEveryBackEndAndBecomeRegressionCasesInOneStep) {
   EXPECT_EQ(c.a.rings.size(), 1u);
   EXPECT_EQ(c.b.rings.size(), 1u);
   EXPECT_EQ(c.a.rings[0].size() + c.b.rings[0].size(), 8u);
+  fs::remove_all(dir);
+}
+
+// The first line of a shell command's output ("" when it fails).
+std::string output_of(const std::string& command) {
+  std::string out;
+  if (FILE* f = ::popen(command.c_str(), "r")) {
+    char buf[256];
+    if (std::fgets(buf, sizeof buf, f)) out = buf;
+    ::pclose(f);
+  }
+  while (!out.empty() && out.back() == '\n') out.pop_back();
+  return out;
+}
+
+TEST(Sweep, SweepTxtNamesTheCommitTheBinaryWasBuiltFrom) {
+  // Issue 15: sweep.txt records the commit. It must be the build's, known without asking git
+  // at run time: here git cannot find the tree when the sweep runs (GIT_DIR points nowhere).
+  const fs::path dir = fresh_dir("commit");
+  ASSERT_EQ(std::system(("GIT_DIR=/nonexistent " + std::string(MK_EXPERIMENT_BIN) +
+                         " run --quick --seeds 1 --generators identical --no-peers --no-artefacts --no-report -o " +
+                         dir.string() + " > /dev/null 2>&1")
+                            .c_str()),
+            0);
+  std::ifstream in(dir / "sweep.txt");
+  std::string line, commit_line;
+  while (std::getline(in, line)) {
+    if (line.rfind("commit: ", 0) == 0) commit_line = line;
+  }
+  const std::string head = output_of("git -C '" MK_SOURCE_DIR "' rev-parse --short=12 HEAD 2>/dev/null");
+  std::cout << commit_line << " (source tree HEAD: " << (head.empty() ? "none" : head) << ")\n";
+  if (head.empty()) {
+    EXPECT_EQ(commit_line, "commit: unknown (not a git checkout)");
+  } else {
+    EXPECT_EQ(commit_line.rfind("commit: " + head, 0), 0u) << commit_line;
+  }
   fs::remove_all(dir);
 }
 
