@@ -17,6 +17,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "arithmetic/nearest_double.hpp"
 #include "experiments/ogc.hpp"
 #include "experiments/peers/peers.hpp"
 
@@ -105,15 +106,18 @@ CgalSet to_set(const PeerInput& in) {
   return s;
 }
 
-Ring rounded(const CgalPolygon& p) {
-  Ring r;
-  for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v) r.push_back({CGAL::to_double(v->x()), CGAL::to_double(v->y())});
-  return r;
-}
-
 std::vector<RationalPoint> exact_ring(const CgalPolygon& p) {
   std::vector<RationalPoint> r;
   for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v) r.push_back({to_mpq(v->x()), to_mpq(v->y())});
+  return r;
+}
+
+// The exact ring rounded to nearest (MPFR), as mkbool's exact kernels round theirs.
+// CGAL::to_double is not that: it halves the sum of its interval's bounds, which picks the
+// even one of the two neighbouring doubles, not the nearer.
+Ring rounded(const std::vector<RationalPoint>& exact) {
+  Ring r;
+  for (const RationalPoint& v : exact) r.push_back({nearest_double(v.x), nearest_double(v.y)});
   return r;
 }
 
@@ -140,11 +144,11 @@ PeerOutput compute(const PeerInput& a, const PeerInput& b, Operation op) {
   for (const auto& p : result) {
     OgcPolygon q;
     std::vector<std::vector<RationalPoint>> e;
-    q.shell = rounded(p.outer_boundary());
     e.push_back(exact_ring(p.outer_boundary()));
+    q.shell = rounded(e.back());
     for (auto h = p.holes_begin(); h != p.holes_end(); ++h) {
-      q.holes.push_back(rounded(*h));
       e.push_back(exact_ring(*h));
+      q.holes.push_back(rounded(e.back()));
     }
     out.polygons.push_back(std::move(q));
     out.exact_rings.push_back(std::move(e));

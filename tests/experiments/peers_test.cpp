@@ -11,6 +11,7 @@
 #include <regex>
 #include <set>
 
+#include "arithmetic/nearest_double.hpp"
 #include "experiments/external_cases.hpp"
 #include "experiments/ogc.hpp"
 #include "experiments/peer_verdict.hpp"
@@ -113,6 +114,34 @@ TEST(Peers, KnownCgalFaultIsFoundAndBlamedOnCgalByThePointCheck) {
   ASSERT_EQ(pa.assessment.verdict, Verdict::wrong) << "CGAL fixed? then drop this case from the design notes";
   const PointCheck check = independent_point_check(a, b, Operation::intersection, ref, peer_cycles(out), out.unbounded);
   EXPECT_EQ(check.wrong, "other") << check.explanation;
+}
+
+TEST(Peers, CgalOutputIsRoundedToTheNearestDouble) {
+  if (!is_peer("cgal_epeck")) GTEST_SKIP() << "built without CGAL";
+  // The crossing (1/3, 2/3) of y = 2x with x + y = 1: neither coordinate is a double. CGAL's
+  // exact output is rounded once, to nearest (issue 18: every rational through MPFR); the
+  // double below 1/3 is the nearer one, and the tie rule of an interval midpoint would not
+  // pick it.
+  const std::string wa = "POLYGON((0 0,1 0,0 1,0 0))", wb = "POLYGON((0 0,1 2,-1 2,0 0))";
+  const Polygon a = poly(wa), b = poly(wb);
+  const MultiPolygon ao = read_wkt(wa), bo = read_wkt(wb);
+  const PeerOutput out = run_peer("cgal_epeck", {&a, &ao}, {&b, &bo}, Operation::intersection);
+  ASSERT_EQ(out.polygons.size(), 1u);
+  ASSERT_EQ(out.exact_rings.size(), 1u);
+  const Ring& ring = out.polygons[0].shell;
+  const auto& exact = out.exact_rings[0][0];
+  ASSERT_EQ(ring.size(), exact.size());
+  bool crossing_seen = false;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    EXPECT_EQ(ring[i].x, nearest_double(exact[i].x)) << i;
+    EXPECT_EQ(ring[i].y, nearest_double(exact[i].y)) << i;
+    if (exact[i].x == mpq_class(1, 3)) {
+      crossing_seen = true;
+      EXPECT_EQ(ring[i].x, 1.0 / 3.0);
+      EXPECT_EQ(ring[i].y, 2.0 / 3.0);
+    }
+  }
+  EXPECT_TRUE(crossing_seen);
 }
 
 TEST(Peers, ClipperKeepsDoublesExactOnItsGrid) {
