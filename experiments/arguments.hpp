@@ -15,6 +15,7 @@
 #include <string>
 
 #include "api/mkbool.hpp"
+#include "experiments/peers/peers.hpp"
 
 namespace mk::experiments::arguments {
 
@@ -71,13 +72,17 @@ CLI::Validator accepted_by(F&& f, const char* name) {
       "", name);
 }
 
-inline void check_kernel(const std::string& k) {
-  std::string known;
+// A back end of run: a kernel of mk::kernel_names() or a peer of peer_names().
+inline void check_backend(const std::string& k) {
+  if (is_peer(k)) return;
   for (const auto n : mk::kernel_names()) {
     if (n == k) return;
-    known += (known.empty() ? "" : ", ") + std::string(n);
   }
-  throw std::invalid_argument("unknown kernel '" + k + "' (built: " + known + ")");
+  std::string known = "kernels:";
+  for (const auto n : mk::kernel_names()) known += " " + std::string(n);
+  known += "; peers:";
+  for (const auto p : peer_names()) known += " " + std::string(p);
+  throw std::invalid_argument("unknown back end '" + k + "' (" + known + ")");
 }
 
 // The operation names of the command; symdifference is a synonym of xor everywhere.

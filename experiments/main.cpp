@@ -339,9 +339,7 @@ int main(int argc, char** argv) {
   auto* quick = run->add_flag("--quick", ra.quick, "small sweep (under 2 minutes on 2 cores)");
   run->add_flag("--full", ra.full, "long sweep (hours; see experiments/README.md)")->excludes(quick);
   const auto backend_check = accepted_by(
-      [](const std::string& k) {
-        if (!is_peer(k)) check_kernel(k);
-      },
+      [](const std::string& k) { check_backend(k); },
       "back end");
   const auto generator_check = accepted_by([](const std::string& g) { find_generator(g); }, "generator");
   run->add_option("--kernels,--backends", ra.kernels, "back ends to run: kernels and peers (default: every one built; rational-mp and rational-cpp only with --full)")
