@@ -281,6 +281,21 @@ TEST(cliCommand, UnwritableOutputExitsOne) {
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"taken"});
 }
 
+// A full device (/dev/full) behind the result or behind --stats: exit 1, never 0 with the
+// output or the asked-for statistics lost. With --stats lost, the result is still written.
+TEST(cliCommand, FullOutputOrFullStandardErrorExitsOne) {
+  if (!std::filesystem::is_character_file("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  const std::string command = "'" + mkbool_exe() + "' intersection '" + square_a + "' '" + square_b + "'";
+  const ProcessResult to_file = run_mkbool({"intersection", square_a, square_b, "-o", "/dev/full"});
+  EXPECT_EQ(to_file.exit_code, 1) << describe(to_file);
+  EXPECT_NE(to_file.err.find("No space left on device"), std::string::npos) << describe(to_file);
+  const ProcessResult to_stdout = run_process({"/bin/sh", "-c", command + " > /dev/full"});
+  EXPECT_EQ(to_stdout.exit_code, 1) << describe(to_stdout);
+  const ProcessResult stats = run_process({"/bin/sh", "-c", command + " --stats 2> /dev/full"});
+  EXPECT_EQ(stats.exit_code, 1) << describe(stats);
+  EXPECT_EQ(canonical_wkt(stats.out), canonical_wkt("POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))")) << describe(stats);
+}
+
 TEST(cliCommand, DeviceTargetIsWrittenInPlace) {
   // Renaming a temporary file over /dev/null would replace the device.
   const ProcessResult r = run_mkbool({"intersection", square_a, square_b, "-o", "/dev/null"});
