@@ -2,7 +2,9 @@
 // Preconditions: see command.hpp.
 #include "cli/command.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 #include "api/mkbool.hpp"
 #include "cli/exit_codes.hpp"
@@ -82,15 +84,18 @@ void run_command(const CommandOptions& o) {
 
   // Statistics first: they describe the operation, which succeeded even when its result
   // cannot be written in the requested format.
+  // A failed write of them (standard error on a full disk) is an error, reported after the
+  // result is written: asked-for statistics are never lost with exit 0.
+  int stats_lost = 0;  // errno of the failed write
   if (o.stats) {
     const std::string line = stats_json(result, counters) + "\n";
-    std::fputs(line.c_str(), stderr);
-    std::fflush(stderr);
+    if (std::fputs(line.c_str(), stderr) == EOF || std::fflush(stderr) != 0) stats_lost = errno != 0 ? errno : EIO;
   }
   const std::string text = format_output(o, a, b, result);
   OutputFile out(o.output);
   out.write(text);
   out.commit();
+  if (stats_lost) throw OutputError(std::string("cannot write the statistics to standard error: ") + std::strerror(stats_lost));
 }
 
 }  // namespace mk::cli

@@ -88,7 +88,7 @@ Input read_input(const std::string& argument, std::string_view role) {
   switch (classify_input(argument)) {
     case InputSource::standard_input:
       try {
-        text = read_standard_input();
+        text = read_text_stream(stdin, "standard input");  // stops at a NUL byte (< /dev/zero)
       } catch (const InvalidInput& e) {
         throw InvalidInput(who + ": " + e.what());
       }
@@ -96,7 +96,7 @@ Input read_input(const std::string& argument, std::string_view role) {
       break;
     case InputSource::file:
       try {
-        text = read_file(argument);
+        text = read_text_file(argument);  // stops at a NUL byte: /dev/zero is refused at once
       } catch (const InvalidInput& e) {
         throw InvalidInput(who + ": " + e.what());  // the message already names the path
       }

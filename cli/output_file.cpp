@@ -1,5 +1,6 @@
 // Output to standard output or, atomically, to a file (temporary file beside the final target
-// of any symbolic links, then rename); devices, FIFOs and terminals are written in place.
+// of any symbolic links, then rename); devices, FIFOs, terminals and files this process
+// already has open for writing (-o /dev/stdout >> log) are written in place.
 // [MK89 §3.2]
 // Preconditions: POSIX.
 #include "cli/output_file.hpp"
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 #include "cli/exit_codes.hpp"
@@ -62,6 +64,31 @@ std::filesystem::path end_of_link_chain(const std::string& path) {
   throw OutputError("cannot write output file '" + path + "': too many levels of symbolic links");
 }
 
+// The descriptor this process already has open on the file that path names, when path is
+// one of its standard streams or descriptors (/dev/stdout, /dev/stderr, /dev/fd/N,
+// /proc/self/fd/N, or any name of the same file as standard output or error); -1 otherwise.
+// `mkbool ... -o /dev/stdout >> log` must append to log through the shell's descriptor:
+// renaming a new file over log, which /dev/stdout resolves to, would lose what log held.
+int open_descriptor_of(const std::string& path, const struct stat& st) {
+  std::vector<int> candidates{STDOUT_FILENO, STDERR_FILENO};
+  for (const std::string_view prefix : {std::string_view("/dev/fd/"), std::string_view("/proc/self/fd/")}) {
+    if (path.size() > prefix.size() && path.compare(0, prefix.size(), prefix) == 0) {
+      const std::string digits = path.substr(prefix.size());
+      if (digits.size() < 9 && digits.find_first_not_of("0123456789") == std::string::npos) {
+        candidates.push_back(std::stoi(digits));
+      }
+    }
+  }
+  for (const int fd : candidates) {
+    struct stat open {};
+    if (::fstat(fd, &open) == 0 && open.st_dev == st.st_dev && open.st_ino == st.st_ino) {
+      const int flags = ::fcntl(fd, F_GETFL);
+      if (flags >= 0 && (flags & O_ACCMODE) != O_RDONLY) return fd;
+    }
+  }
+  return -1;
+}
+
 }  // namespace
 
 void OutputFile::open_temporary() {
@@ -79,6 +106,17 @@ void OutputFile::open_temporary() {
     if (fd_ < 0) throw OutputError("cannot open output '" + path_ + "': " + system_message());
     in_place_ = true;
     return;
+  }
+  // A regular file this process already writes to (-o /dev/stdout with standard output
+  // redirected to a file) is written through that descriptor, where the shell put it.
+  if (exists) {
+    const int fd = open_descriptor_of(path_, st);
+    if (fd >= 0) {
+      fd_ = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
+      if (fd_ < 0) throw OutputError("cannot open output '" + path_ + "': " + system_message());
+      in_place_ = true;
+      return;
+    }
   }
   // A regular file, or nothing yet: the bytes go to a temporary file beside the final target
   // of any symbolic links, which is renamed over that target, so the links stay links.

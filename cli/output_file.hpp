@@ -16,7 +16,9 @@ namespace mk::cli {
 // link stays a link. A replaced file keeps its permission bits (and, run as root, its
 // owner); a read-only file is refused. An empty path or `-` means standard output, written
 // as it comes; a target that is not a regular file (a device such as /dev/null, a FIFO, a
-// terminal, /dev/stdout on a pipe) is written in place, never replaced. Hard links to a
+// terminal, /dev/stdout on a pipe) is written in place, never replaced; so is a regular
+// file that standard output or error (or /dev/fd/N's descriptor) already writes to, through
+// that descriptor (-o /dev/stdout >> log appends to log, as the shell set it up). Hard links to a
 // replaced file keep the old contents, as with any rename-based writer.
 // Failures throw mk::cli::OutputError.
 class OutputFile {

@@ -15,7 +15,30 @@
 
 namespace mk {
 
-std::string read_file(const std::string& path) {
+namespace {
+
+enum class Contents { any, text };
+
+std::string read_stream(std::FILE* stream, const std::string& name, Contents contents, std::size_t reserve = 0) {
+  std::string content;
+  content.reserve(reserve);
+  char buffer[1 << 16];
+  std::size_t got = 0;
+  while ((got = std::fread(buffer, 1, sizeof buffer, stream)) > 0) {
+    if (contents == Contents::text) {
+      if (const void* nul = std::memchr(buffer, '\0', got)) {
+        const auto at = content.size() + static_cast<std::size_t>(static_cast<const char*>(nul) - buffer);
+        throw InvalidInput(name + " holds a NUL byte at offset " + std::to_string(at) +
+                           ": binary data, not WKT, GeoJSON or JSON text");
+      }
+    }
+    content.append(buffer, got);
+  }
+  if (std::ferror(stream)) throw InvalidInput("cannot read " + name + ": " + std::strerror(errno));
+  return content;
+}
+
+std::string read_named_file(const std::string& path, Contents contents) {
   if (path.empty()) throw InvalidInput("no input file given (the path is empty)");
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
@@ -30,16 +53,18 @@ std::string read_file(const std::string& path) {
     throw InvalidInput("cannot open '" + path + "': " +
                        (errno != 0 ? std::strerror(errno) : "unknown error"));
   }
-  std::string content;
   const auto size = std::filesystem::file_size(path, ec);
-  if (!ec) content.reserve(static_cast<std::size_t>(size));
-  char buffer[1 << 16];
-  std::size_t got = 0;
-  while ((got = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) content.append(buffer, got);
-  if (std::ferror(file.get())) {
-    throw InvalidInput("cannot read '" + path + "': " + std::strerror(errno));
-  }
-  return content;
+  return read_stream(file.get(), io_detail::quoted(path), contents, ec ? 0 : static_cast<std::size_t>(size));
+}
+
+}  // namespace
+
+std::string read_file(const std::string& path) { return read_named_file(path, Contents::any); }
+
+std::string read_text_file(const std::string& path) { return read_named_file(path, Contents::text); }
+
+std::string read_text_stream(std::FILE* stream, const std::string& name) {
+  return read_stream(stream, name, Contents::text);
 }
 
 std::string empty_input_message(std::string_view path) {

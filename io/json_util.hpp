@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -22,6 +23,24 @@ inline bool is_blank(std::string_view text) {
   return text.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos;
 }
 
+// The DOM builder of Json::parse, except that a number literal that is not zero but
+// underflows to zero as a double (1e-400, or 0. and 330 zeros and a 1) becomes NaN, which
+// no JSON number is otherwise: nlohmann reads it as 0 without a word, which would silently
+// move a vertex (the WKT reader refuses it too). json_number_to_double refuses it where it
+// is a coordinate; elsewhere (properties, bbox) it is ignored like the rest.
+class DomMarkingUnderflow : public nlohmann::detail::json_sax_dom_parser<Json> {
+ public:
+  using Base = nlohmann::detail::json_sax_dom_parser<Json>;
+  using Base::Base;
+  // Called by sax_parse through the template type, so this hides the base's.
+  bool number_float(Json::number_float_t value, const Json::string_t& literal) {
+    if (value == 0 && literal.find_first_of("123456789") < literal.find_first_of("eE")) {
+      value = std::numeric_limits<double>::quiet_NaN();
+    }
+    return Base::number_float(value, literal);
+  }
+};
+
 // Parses JSON; syntax errors become "<format> line L, column C: <reason>", with the line
 // and column computed from nlohmann's byte offset so that they match the WKT reader's.
 inline Json parse_json(std::string_view text, std::string_view format) {
@@ -30,7 +49,10 @@ inline Json parse_json(std::string_view text, std::string_view format) {
                                              "object");
   }
   try {
-    return Json::parse(text.begin(), text.end());
+    Json json;
+    DomMarkingUnderflow dom(json);
+    Json::sax_parse(text.begin(), text.end(), &dom);  // errors throw, as in Json::parse
+    return json;
   } catch (const Json::parse_error& e) {
     // e.byte is the 1-based index of the last byte read, i.e. the offending one.
     const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
@@ -78,6 +100,11 @@ inline bool json_number_to_double(const Json& j, double& out, std::string& probl
   switch (j.type()) {
     case Json::value_t::number_float:
       out = j.get<double>();
+      if (std::isnan(out)) {  // see DomMarkingUnderflow
+        problem = "coordinate is not representable as a double (not zero, but too small in magnitude: it "
+                  "would be read as 0)";
+        return false;
+      }
       if (!std::isfinite(out)) {
         problem = "coordinate is not a finite number";
         return false;

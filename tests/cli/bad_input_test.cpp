@@ -153,20 +153,34 @@ TEST(cliBadInput, MultiPartInputIsNeverReinterpreted) {
   const ProcessResult coverage =
       run_mkbool({"union", "MULTIPOLYGON(((0 0,10 0,10 10,0 10,0 0)),((10 0,20 0,20 10,10 10,10 0)))", "POLYGON EMPTY"});
   EXPECT_EQ(coverage.exit_code, 0) << describe(coverage);
-  EXPECT_EQ(coverage.out, "POLYGON ((0 0, 10 0, 20 0, 20 10, 10 10, 0 10, 0 0))\n");
+  EXPECT_EQ(canonical_wkt(coverage.out), canonical_wkt("POLYGON ((0 0, 10 0, 20 0, 20 10, 10 10, 0 10, 0 0))"));
 }
 
 TEST(cliBadInput, HostileBytesAndNumbers) {
-  // Bytes that are no text at all, on standard input.
+  // Bytes that are no text at all, on standard input: refused by the reader, or at the
+  // first NUL byte (which no WKT, GeoJSON or JSON text holds) before any parsing.
   std::string garbage(4096, '\0');
-  for (std::size_t i = 0; i < garbage.size(); ++i) garbage[i] = static_cast<char>((i * 2654435761u) >> 13);
+  for (std::size_t i = 0; i < garbage.size(); ++i) garbage[i] = static_cast<char>((i * 2654435761u) >> 13 | 1);
   expect_invalid({"union", "-", square_b}, {"A (standard input): WKT line 1, column 1"}, garbage);
+  garbage[1000] = '\0';
+  expect_invalid({"union", "-", square_b}, {"A: standard input holds a NUL byte at offset 1000: binary data"}, garbage);
   // A million digits: read, and refused as not representable.
   TempDir dir;
   expect_invalid_a(dir.write("big.wkt", "POLYGON((0 0,1" + std::string(1'000'000, '0') + " 0,0 1,0 0))"),
                    {"x coordinate '1" + std::string(31, '0') + "...' is not representable as a double"});
   expect_invalid_a("POLYGON((0 0,0x1p3 0,0 1,0 0))", {"malformed number '0x1p3'"});
   expect_invalid_a(dir.path().string(), {"is a directory"});
+}
+
+// Inputs that never end. Read to their end, they took all memory (exit 1 "out of memory"
+// at best, after gigabytes); no polygon text holds a NUL byte, so the first read refuses them.
+TEST(cliBadInput, EndlessBinaryInputIsRefusedAtTheFirstRead) {
+  expect_invalid_a("/dev/zero", {"A: '/dev/zero' holds a NUL byte at offset 0: binary data"});
+  expect_invalid({"union", square_b, "/dev/urandom"}, {"B: '/dev/urandom' holds a NUL byte at offset "});
+  const ProcessResult r = run_process({"/bin/sh", "-c", "exec '" + mkbool_exe() + "' union - '" + square_b + "' < /dev/zero"});
+  ASSERT_FALSE(r.timed_out) << describe(r);
+  EXPECT_EQ(r.exit_code, 3) << describe(r);
+  EXPECT_EQ(r.err, "mkbool: error: A: standard input holds a NUL byte at offset 0: binary data, not WKT, GeoJSON or JSON text\n");
 }
 
 TEST(cliBadInput, DuplicateConsecutiveVerticesAreAccepted) {

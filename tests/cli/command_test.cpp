@@ -87,7 +87,8 @@ TEST(cliCommand, SymdifferenceIsASynonymOfXor) {
   const ProcessResult x = run_mkbool({"xor", square_a, square_b});
   ASSERT_EQ(sym.exit_code, 0) << describe(sym);
   EXPECT_EQ(sym.out, x.out);
-  EXPECT_EQ(sym.out, "MULTIPOLYGON (((0 0, 2 0, 2 1, 1 1, 1 2, 0 2, 0 0)), ((2 2, 2 1, 3 1, 3 3, 1 3, 1 2, 2 2)))\n");
+  EXPECT_EQ(canonical_wkt(sym.out),
+            canonical_wkt("MULTIPOLYGON (((0 0, 2 0, 2 1, 1 1, 1 2, 0 2, 0 0)), ((2 2, 2 1, 3 1, 3 3, 1 3, 1 2, 2 2)))"));
 }
 
 TEST(cliCommand, ZCoordinatesAndAltitudesAreDropped) {
@@ -98,7 +99,7 @@ TEST(cliCommand, ZCoordinatesAndAltitudesAreDropped) {
                               "POLYGON ZM ((0 0 1 7,2 0 1 7,2 2 1 7,0 2 1 7,0 0 1 7))"}) {
     const ProcessResult r = run_mkbool({"intersection", a, b});
     EXPECT_EQ(r.exit_code, 0) << a << "\n" << describe(r);
-    EXPECT_EQ(r.out, "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))\n") << a;
+    EXPECT_EQ(canonical_wkt(r.out), canonical_wkt("POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))")) << a;
   }
 }
 
@@ -280,6 +281,21 @@ TEST(cliCommand, UnwritableOutputExitsOne) {
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"taken"});
 }
 
+// A full device (/dev/full) behind the result or behind --stats: exit 1, never 0 with the
+// output or the asked-for statistics lost. With --stats lost, the result is still written.
+TEST(cliCommand, FullOutputOrFullStandardErrorExitsOne) {
+  if (!std::filesystem::is_character_file("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  const std::string command = "'" + mkbool_exe() + "' intersection '" + square_a + "' '" + square_b + "'";
+  const ProcessResult to_file = run_mkbool({"intersection", square_a, square_b, "-o", "/dev/full"});
+  EXPECT_EQ(to_file.exit_code, 1) << describe(to_file);
+  EXPECT_NE(to_file.err.find("No space left on device"), std::string::npos) << describe(to_file);
+  const ProcessResult to_stdout = run_process({"/bin/sh", "-c", command + " > /dev/full"});
+  EXPECT_EQ(to_stdout.exit_code, 1) << describe(to_stdout);
+  const ProcessResult stats = run_process({"/bin/sh", "-c", command + " --stats 2> /dev/full"});
+  EXPECT_EQ(stats.exit_code, 1) << describe(stats);
+  EXPECT_EQ(canonical_wkt(stats.out), canonical_wkt("POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))")) << describe(stats);
+}
+
 TEST(cliCommand, DeviceTargetIsWrittenInPlace) {
   // Renaming a temporary file over /dev/null would replace the device.
   const ProcessResult r = run_mkbool({"intersection", square_a, square_b, "-o", "/dev/null"});
@@ -304,7 +320,7 @@ TEST(cliCommand, MillionLevelNestingInIgnoredMembersIsRead) {
   const std::string native = dir.write("b.json", R"({"note":)" + deep + R"(,"rings":[[[1,1],[3,1],[3,3],[1,3]]]})");
   const ProcessResult r = run_mkbool({"intersection", geojson, square_b});
   EXPECT_EQ(r.exit_code, 0) << describe(r);
-  EXPECT_EQ(r.out, "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))\n");
+  EXPECT_EQ(canonical_wkt(r.out), canonical_wkt("POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))"));
   // Native JSON has no ignored members: the deep one is refused by name, cleanly.
   const ProcessResult strict = run_mkbool({"intersection", geojson, native});
   EXPECT_EQ(strict.exit_code, 3) << describe(strict);

@@ -218,6 +218,32 @@ TEST(cliOutputFile, ALinkToADeviceStaysALinkToTheDevice) {
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"stdout"});
 }
 
+// -o /dev/stdout (or /dev/fd/N) with that stream redirected by the shell to a regular file:
+// the output goes through the shell's descriptor, so `>>` appends and the file stays the
+// same file. Renaming a new file over what /dev/stdout resolves to lost the earlier lines.
+TEST(cliOutputFile, ARedirectedStandardStreamIsWrittenThroughTheShellsDescriptor) {
+  TempDir dir;
+  const std::string log = dir.write("log.txt", "earlier\n");
+  struct stat before {};
+  ASSERT_EQ(::stat(log.c_str(), &before), 0);
+  const std::string command = "'" + mkbool_exe() + "' intersection '" + square_a + "' '" + square_b + "'";
+  for (const std::string redirect : {" -o /dev/stdout >> log.txt", " -o /dev/fd/1 >> log.txt",
+                                     " -o /proc/self/fd/1 >> log.txt", " -o /dev/stderr 2>> log.txt",
+                                     " -o /dev/fd/3 3>> log.txt"}) {
+    ProcessOptions options;
+    options.cwd = dir.path().string();
+    const ProcessResult r = run_process({"/bin/sh", "-c", command + redirect}, options);
+    ASSERT_EQ(r.exit_code, 0) << redirect << "\n" << describe(r);
+  }
+  std::string expected = "earlier\n";
+  for (int i = 0; i < 5; ++i) expected += result;
+  EXPECT_EQ(read_text(log), expected);
+  struct stat after {};
+  ASSERT_EQ(::stat(log.c_str(), &after), 0);
+  EXPECT_EQ(after.st_ino, before.st_ino);  // the same file, not a new one renamed over it
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"log.txt"});
+}
+
 TEST(cliOutputFile, AFailedRunLeavesTheLinkedFileAsItWas) {
   TempDir dir;
   const std::string real = dir.write("real.wkt", "old\n");

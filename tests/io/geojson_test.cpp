@@ -139,6 +139,26 @@ TEST(ioGeoJson, RejectsNonFiniteNumbers) {
                       "GeoJSON line 1, column 42: syntax error"));
 }
 
+TEST(ioGeoJson, RejectsNonzeroNumbersThatWouldReadAsZero) {
+  // 1e-400 read as 0 moved the vertex without a word (WKT refused it already).
+  EXPECT_TRUE(rejects([] { read_geojson(polygon_json("[[[0,-1],[-1e-400,0],[0,1],[-1,0],[0,-1]]]")); },
+                      "GeoJSON at coordinates[0][1][0]: coordinate is not representable as a double (not zero, "
+                      "but too small in magnitude: it would be read as 0)"));
+  const std::string long_fraction = "0." + std::string(330, '0') + "1";
+  EXPECT_TRUE(rejects([&] { read_geojson(polygon_json("[[[0,0],[2,0],[" + long_fraction + ",1],[0,0]]]")); },
+                      "GeoJSON at coordinates[0][2][0]: coordinate is not representable as a double"));
+  // Zeros in any spelling, such numbers where they are no coordinates (properties, bbox),
+  // and the smallest subnormals are read.
+  const MultiPolygon read = read_geojson(
+      R"({"type":"Feature","bbox":[1e-400,0,2,1],"properties":{"note":"1e-400 \" 1e-999","v":1e-999},)"
+      R"("geometry":{"type":"Polygon",)"
+      R"("coordinates":[[[0e-999,0.0E+5],[-0.000e-400,1],[2.4703282292062328e-324,1],[0,0]]]}})");
+  ASSERT_EQ(read.size(), 1u);
+  EXPECT_EQ(read[0].shell.size(), 3u);
+  EXPECT_EQ(read[0].shell[1].x, 0.0);
+  EXPECT_EQ(read[0].shell[2].x, 4.9406564584124654e-324);
+}
+
 TEST(ioGeoJson, RejectsWrongTypes) {
   EXPECT_TRUE(rejects([] { read_geojson(R"({"type":"LineString","coordinates":[[0,0],[1,1]]})"); },
                       "GeoJSON at top level: LineString is not a polygonal geometry"));

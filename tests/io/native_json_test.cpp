@@ -95,6 +95,8 @@ TEST(ioNativeJson, RejectsMalformedCoordinates) {
                       "rational string \"p/q\""));
   EXPECT_TRUE(rejects([] { read_native_json(R"({"rings": [[[0, 1e999]]]})"); },
                       "native JSON: number overflow parsing '1e999'"));
+  EXPECT_TRUE(rejects([] { read_native_json(R"({"rings": [[[0, 0], [1e-999, 0], [0, 1]]]})"); },
+                      "native JSON at rings[0][1][0]: coordinate is not representable as a double (not zero"));
 }
 
 TEST(ioNativeJson, RejectsBadStructure) {
