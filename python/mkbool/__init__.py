@@ -16,6 +16,7 @@ import fractions
 import math
 
 from . import _mkbool
+from . import harness
 from ._inputs import Polygon, as_polygon, is_geometry
 from ._mkbool import Error, InputPolygon, InvalidInput, KernelFailure, OutputError, UsageError
 
