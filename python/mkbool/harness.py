@@ -109,7 +109,7 @@ def _python_cases(names, count, base_seed, first_index):
                 built.append((index, name, "", "", seed, as_polygon(a, "A"), as_polygon(b, "B")))
             except Exception as e:  # the harness records it and goes on
                 row = {c: None for c in columns()}
-                row.update(case_index=index, generator=name, variant="", params="", seed=seed, size=0,
+                row.update(case=index, generator=name, variant="", params="", seed=seed, size=0,
                            op="", regular=True, kernel="reference", verdict="invalid_input",
                            message=f"generator: {type(e).__name__}: {e}")
                 failed.append(row)

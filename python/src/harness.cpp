@@ -26,7 +26,7 @@ py::object opt(const std::optional<bool>& v) { return v ? py::object(py::bool_(*
 // One row as a dict whose keys are the CSV schema's columns (experiments/README.md).
 py::dict row_dict(const ResultRow& r) {
   py::dict d;
-  d["case_index"] = r.case_index;
+  d["case"] = r.case_index;
   d["generator"] = r.generator;
   d["variant"] = r.variant;
   d["params"] = r.params;
