@@ -5,6 +5,8 @@
 // every accepted input into an InputPolygon before calling here.
 #include <mpfr.h>
 
+#include <chrono>
+#include <cstdint>
 #include <new>
 #include <stdexcept>
 
@@ -152,4 +154,20 @@ PYBIND11_MODULE(_mkbool, m) {
       py::arg("a_type") = py::none(), py::arg("b_type") = py::none(), py::arg("area_exact") = false,
       py::arg("exact") = false);
   m.def("with_type", &with_type, py::arg("polygon"), py::arg("type"));
+  // For bench/python_speed.py: the C++ call alone (mk::compute on converted inputs, with
+  // the module's default options), timed in C++ `repeats` times; nanoseconds per call.
+  m.def(
+      "_time_compute",
+      [](const std::string& op, const InputPolygon& a, const InputPolygon& b, const std::string& kernel, int repeats) {
+        const BooleanOptions o = make_options(operation_named(op), kernel, true, false, false);
+        std::vector<std::int64_t> ns;
+        py::gil_scoped_release release;
+        for (int i = 0; i < repeats; ++i) {
+          const auto t0 = std::chrono::steady_clock::now();
+          const BooleanOutput out = compute(*a.polygon, *b.polygon, o);
+          ns.push_back(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count());
+        }
+        return ns;
+      },
+      py::arg("op"), py::arg("a"), py::arg("b"), py::arg("kernel") = "", py::arg("repeats") = 1);
 }

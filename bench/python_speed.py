@@ -1,0 +1,159 @@
+#!/usr/bin/python3
+"""The Python module's cost over the C++ call, and against shapely 1.8 (GEOS), on blob
+n = 1e5 with numpy arrays in and out (issue 16). One process, one run: every timed
+variant is repeated in turn (round robin) so that load from other processes falls on all
+of them alike, and the medians and their ratios come from the same run.
+
+    PYTHONPATH=build/python /usr/bin/python3 bench/python_speed.py [--n 100000] [--repeats 15]
+
+Writes bench/results/python_speed.{json,md,png} (or --out DIR). Timed variants, each the
+intersection of the two blobs:
+
+- cpp: mk::compute on inputs already converted, timed in C++ (the C++ call);
+- module: mkbool.intersection(numpy A, numpy B) and the result's .polygons (every ring a
+  numpy array): arrays in, arrays out;
+- module_in_only: the same without reading the arrays out;
+- shapely: Polygon(A).intersection(Polygon(B)) and every ring of the result as a numpy
+  array: arrays in, arrays out;
+- geos_only: the intersection of two shapely polygons built beforehand.
+"""
+
+import argparse
+import json
+import math
+import pathlib
+import platform
+import statistics
+import time
+
+import numpy as np
+import shapely
+import shapely.geometry as sg
+
+import mkbool
+from mkbool import _mkbool
+
+
+def blob(n, centre, phase=0.0):
+    # bench/workloads.cpp's blob_ring, operation for operation: t = 2 pi i / n,
+    # r = 100 (1 + 0.1 sin(5 t + phase)), vertex (cx + r cos t, cy + r sin t).
+    t = 2 * math.pi * np.arange(n, dtype=np.float64) / n
+    r = 100 * (1 + 0.1 * np.sin(5 * t + phase))
+    return np.column_stack([centre[0] + r * np.cos(t), centre[1] + r * np.sin(t)])
+
+
+def shapely_arrays(g):
+    parts = [g] if g.geom_type == "Polygon" else list(g.geoms)
+    return [[np.asarray(p.exterior.coords)] + [np.asarray(h.coords) for h in p.interiors] for p in parts]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--n", type=int, default=100000)
+    ap.add_argument("--repeats", type=int, default=15)
+    ap.add_argument("--kernel", default="exact")
+    ap.add_argument("--out", default=str(pathlib.Path(__file__).resolve().parent / "results"))
+    args = ap.parse_args()
+
+    a, b = blob(args.n, (0.0, 0.0)), blob(args.n, (30.0, 10.0))
+    pa, pb = mkbool.as_polygon(a), mkbool.as_polygon(b)
+    sa, sb = sg.Polygon(a), sg.Polygon(b)
+
+    def cpp():
+        return _mkbool._time_compute("intersection", pa, pb, args.kernel, 1)[0] / 1e9
+
+    def module():
+        t0 = time.perf_counter()
+        r = mkbool.intersection(a, b, kernel=args.kernel)
+        r.polygons
+        return time.perf_counter() - t0
+
+    def module_in_only():
+        t0 = time.perf_counter()
+        mkbool.intersection(a, b, kernel=args.kernel)
+        return time.perf_counter() - t0
+
+    def shapely_arrays_in_out():
+        t0 = time.perf_counter()
+        shapely_arrays(sg.Polygon(a).intersection(sg.Polygon(b)))
+        return time.perf_counter() - t0
+
+    def geos_only():
+        t0 = time.perf_counter()
+        sa.intersection(sb)
+        return time.perf_counter() - t0
+
+    variants = {"cpp": cpp, "module": module, "module_in_only": module_in_only, "shapely": shapely_arrays_in_out,
+                "geos_only": geos_only}
+    for f in variants.values():  # warm up: caches, allocator, lazy imports
+        f()
+    times = {k: [] for k in variants}
+    for _ in range(args.repeats):
+        for k, f in variants.items():
+            times[k].append(f())
+    med = {k: statistics.median(v) for k, v in times.items()}
+
+    # Same answer: areas agree to rounding (GEOS computes in floating point).
+    r = mkbool.intersection(a, b, kernel=args.kernel)
+    g = sa.intersection(sb)
+    out_vertices = sum(len(ring) - 1 for poly in r.polygons for ring in poly)
+    report = {
+        "n": args.n, "kernel": args.kernel, "repeats": args.repeats,
+        "median_s": med, "all_s": times,
+        "ratios": {
+            "module_over_cpp": med["module"] / med["cpp"],
+            "module_in_only_over_cpp": med["module_in_only"] / med["cpp"],
+            "module_over_shapely": med["module"] / med["shapely"],
+            "cpp_over_geos_only": med["cpp"] / med["geos_only"],
+        },
+        "area": {"mkbool": r.area, "geos": g.area}, "vertices_out": out_vertices,
+        "versions": {"python": platform.python_version(), "numpy": np.__version__, "shapely": shapely.__version__,
+                     "geos": ".".join(map(str, shapely.geos.geos_version))},
+        "load_average": list(__import__("os").getloadavg()),
+        "date": time.strftime("%Y-%m-%d %H:%M"),
+    }
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "python_speed.json").write_text(json.dumps(report, indent=1) + "\n")
+
+    rows = [("C++ call (mk::compute, timed in C++)", "cpp"),
+            ("module: numpy in, numpy out (.polygons)", "module"),
+            ("module: numpy in, result object only", "module_in_only"),
+            ("shapely 1.8: numpy in, numpy out", "shapely"),
+            ("GEOS alone (shapely polygons built before)", "geos_only")]
+    md = [f"Intersection of two blobs of n = {args.n} vertices each, kernel `{args.kernel}`; medians of "
+          f"{args.repeats} round-robin repetitions in one process ({report['date']}, load average "
+          f"{report['load_average'][0]:.1f} on {__import__('os').cpu_count()} cores), shapely "
+          f"{report['versions']['shapely']} on GEOS {report['versions']['geos']}.", "",
+          "| variant | median | / C++ call |", "|---|---:|---:|"]
+    for label, k in rows:
+        md.append(f"| {label} | {med[k] * 1e3:.2f} ms | {med[k] / med['cpp']:.3f} |")
+    ra = report["ratios"]
+    md += ["", f"Module overhead over the C++ call: {100 * (ra['module_over_cpp'] - 1):+.1f}% (arrays in and out), "
+           f"{100 * (ra['module_in_only_over_cpp'] - 1):+.1f}% (arrays in). Module against shapely, arrays in and "
+           f"out: {ra['module_over_shapely']:.2f}x the time ({1 / ra['module_over_shapely']:.2f}x as fast).",
+           f"Result: {out_vertices} vertices; area {r.area!r} (mkbool, exact area correctly rounded), "
+           f"{g.area!r} (GEOS)."]
+    (out / "python_speed.md").write_text("\n".join(md) + "\n")
+    print("\n".join(md))
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.4, 2.8))
+    labels = [label.split(" (")[0].replace(": ", ":\n") for label, _ in rows]
+    values = [med[k] * 1e3 for _, k in rows]
+    colours = ["#7570b3", "#1b9e77", "#66c2a5", "#d95f02", "#fc8d62"]
+    ax.barh(labels[::-1], values[::-1], color=colours[::-1])
+    for y, v in enumerate(values[::-1]):
+        ax.text(v, y, f" {v:.1f} ms", va="center", fontsize=8)
+    ax.set_xlabel("median wall time (ms)")
+    ax.set_title(f"blob n = {args.n}, intersection, one run", fontsize=10)
+    ax.set_xlim(0, max(values) * 1.2)
+    ax.tick_params(axis="y", labelsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "python_speed.png", dpi=100)
+
+
+if __name__ == "__main__":
+    main()
