@@ -50,8 +50,8 @@ std::string type_name(PolygonType t);
 
 // The rings of a polygon as float64 (n, 2) arrays: closing vertex dropped, repeated
 // consecutive vertices removed, non-finite coordinates refused naming ring and vertex
-// (mk::InvalidInput "ring R, vertex V: ..."). Arrays are converted without copy when they
-// are C-contiguous float64 already.
+// (mk::InvalidInput "ring R, vertex V: ..."). Arrays are read in place (no intermediate
+// copy) when they are C-contiguous float64 already.
 Polygon polygon_from_arrays(const py::sequence& rings, PolygonType type);
 
 // A ring as a new float64 (n, 2) array, closed (first vertex repeated) when asked.
