@@ -24,10 +24,11 @@ declare -A sources=(
   [fuzz_wkt]="io/wkt_reader.cpp io/wkt_writer.cpp io/format.cpp io/geojson_reader.cpp io/geojson_writer.cpp io/native_json.cpp io/ring_rules.cpp"
   [fuzz_geojson]="io/geojson_reader.cpp io/geojson_writer.cpp io/ring_rules.cpp"
   [fuzz_native_json]="io/native_json.cpp io/ring_rules.cpp"
+  [fuzz_wkb]="io/wkb_reader.cpp io/wkb_writer.cpp io/ring_rules.cpp"
 )
 
 failed=()
-for target in ${MK_FUZZ_TARGETS:-fuzz_wkt fuzz_geojson fuzz_native_json}; do
+for target in ${MK_FUZZ_TARGETS:-fuzz_wkt fuzz_geojson fuzz_native_json fuzz_wkb}; do
   echo "== building $target"
   files=("$root/fuzz/$target.cpp")
   for s in ${sources[$target]}; do files+=("$root/$s"); done
