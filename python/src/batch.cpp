@@ -33,8 +33,7 @@ PairError error_of(const std::exception_ptr& p) {
   } catch (const InvalidInput& e) {
     return {"InvalidInput", e.what()};
   } catch (const KernelFailure& e) {
-    return {"KernelFailure", std::string("the kernel failed (inexact arithmetic): ") + e.what() +
-                                 "; an exact kernel (kernel='" + std::string(default_kernel()) + "') never does"};
+    return {"KernelFailure", kernel_failure_message(e)};
   } catch (const std::invalid_argument& e) {
     return {"UsageError", e.what()};
   } catch (const std::bad_alloc&) {

@@ -52,9 +52,7 @@ void register_exceptions(py::module_& m) {
     } catch (const InvalidInput& e) {
       PyErr_SetString(t.invalid_input.ptr(), e.what());
     } catch (const KernelFailure& e) {
-      const std::string message = std::string("the kernel failed (inexact arithmetic): ") + e.what() +
-                                  "; an exact kernel (kernel='" + std::string(default_kernel()) + "') never does";
-      PyErr_SetString(t.kernel_failure.ptr(), message.c_str());
+      PyErr_SetString(t.kernel_failure.ptr(), kernel_failure_message(e).c_str());
     } catch (const OutputError& e) {
       PyErr_SetString(t.output_error.ptr(), e.what());
     } catch (const std::invalid_argument& e) {
@@ -87,6 +85,11 @@ PolygonType type_named(const std::string& name) {
   if (name == "island") return PolygonType::island;
   if (name == "hole") return PolygonType::hole;
   throw std::invalid_argument("unknown polygon type '" + name + "' (island or hole)");
+}
+
+std::string kernel_failure_message(const KernelFailure& e) {
+  return std::string("the kernel failed (inexact arithmetic): ") + e.what() + "; an exact kernel (kernel='" +
+         std::string(default_kernel()) + "') never does";
 }
 
 std::string type_name(PolygonType t) { return t == PolygonType::island ? "island" : "hole"; }

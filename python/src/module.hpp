@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "api/mkbool.hpp"
+#include "core/error.hpp"
 #include "core/output.hpp"
 #include "core/polygon.hpp"
 
@@ -45,6 +46,8 @@ struct Request {
 // throws std::invalid_argument with the command's message for an unknown kernel or type.
 BooleanOptions make_options(Operation op, const std::string& kernel, bool regular, bool area_exact, bool exact);
 Operation operation_named(const std::string& name);
+// The command's message for a kernel failure, naming the exact kernel that never fails.
+std::string kernel_failure_message(const KernelFailure& e);
 PolygonType type_named(const std::string& name);
 std::string type_name(PolygonType t);
 
