@@ -16,6 +16,9 @@ intersection of the two blobs:
 - shapely: Polygon(A).intersection(Polygon(B)) and every ring of the result as a numpy
   array: arrays in, arrays out;
 - geos_only: the intersection of two shapely polygons built beforehand.
+
+Then the cost of the exact values (exact area, exact coordinates, Fractions) asked for in
+the call or afterwards, on the blobs and on two stars with many crossings (exact_costs).
 """
 
 import argparse
@@ -47,11 +50,75 @@ def shapely_arrays(g):
     return [[np.asarray(p.exterior.coords)] + [np.asarray(h.coords) for h in p.interiors] for p in parts]
 
 
+def star(n, radius, phase):
+    # A star of n spikes (outer radius `radius`, inner radius radius / 2) turned by `phase`:
+    # two of them turned by half a spike cross about 4n times, the case where the exact
+    # area and exact coordinates cost more than the operation.
+    t = 2 * math.pi * np.arange(2 * n, dtype=np.float64) / (2 * n) + phase
+    r = np.where(np.arange(2 * n) % 2 == 0, radius, radius / 2)
+    return np.column_stack([r * np.cos(t), r * np.sin(t)])
+
+
+def exact_costs(args, a, b, report, md, out):
+    """What the exact values cost (BooleanOptions::area_exact and exact_coordinates are
+    opt-in since issue 17): the call without them, with them asked for in the call, and
+    asked for afterwards from the result (the module runs the operation again once), and
+    the Fractions built from the exact coordinates. Blob 1e5 (few crossings) and two stars
+    of --star spikes (many crossings); medians of --exact-repeats round-robin rounds."""
+    cases = {"blob": (a, b),
+             "star": (star(args.star, 100.0, 0.0), star(args.star, 100.0, math.pi / (2 * args.star)))}
+    rows, result = [], {}
+    for name, (x, y) in cases.items():
+        px, py = mkbool.as_polygon(x), mkbool.as_polygon(y)
+
+        def timed(f):
+            t0 = time.perf_counter()
+            f()
+            return time.perf_counter() - t0
+
+        variants = {
+            "plain": lambda: mkbool.intersection(px, py, kernel=args.kernel),
+            "area_exact_in_call": lambda: mkbool.intersection(px, py, kernel=args.kernel, area_exact=True).area_exact,
+            "area_exact_later": lambda: mkbool.intersection(px, py, kernel=args.kernel).area_exact,
+            "exact_in_call": lambda: mkbool.intersection(px, py, kernel=args.kernel, exact=True)._r._exact_text,
+            "exact_later": lambda: mkbool.intersection(px, py, kernel=args.kernel)._r._exact_text,
+        }
+        times = {k: [] for k in variants}
+        for f in variants.values():
+            f()
+        for _ in range(args.exact_repeats):
+            for k, f in variants.items():
+                times[k].append(timed(f))
+        r = mkbool.intersection(px, py, kernel=args.kernel, exact=True)
+        fractions_s = timed(lambda: r.exact_rings)
+        med = {k: statistics.median(v) for k, v in times.items()}
+        med["fractions"] = fractions_s
+        result[name] = {"median_s": med, "all_s": times, "crossings": r.stats["crossings"],
+                        "vertices_out": r.stats["vertices_out"], "vertices_in": r.stats["vertices_in"]}
+        rows.append(f"| {name} ({r.stats['vertices_in']} vertices in, {r.stats['crossings']} crossings) | "
+                    f"{med['plain'] * 1e3:.1f} ms | "
+                    f"{med['area_exact_in_call'] / med['plain']:.2f} | {med['area_exact_later'] / med['plain']:.2f} | "
+                    f"{med['exact_in_call'] / med['plain']:.2f} | {med['exact_later'] / med['plain']:.2f} | "
+                    f"{fractions_s * 1e3:.1f} ms |")
+    report["exact_costs"] = result
+    (out / "python_speed.json").write_text(json.dumps(report, indent=1) + "\n")
+    md += ["", f"The exact values (opt-in), intersection with kernel `{args.kernel}`, medians of {args.exact_repeats} "
+           "rounds; times relative to the call without them (`plain`): asked for in the call (`area_exact=True`, "
+           "`exact=True`), or read from the result afterwards (`.area_exact`, the exact coordinates: the operation "
+           "runs again once); the last column builds the `Fraction` pairs of `.exact_rings` from them.", "",
+           "| case | plain | area_exact in call | .area_exact later | exact in call | exact later | Fractions |",
+           "|---|---:|---:|---:|---:|---:|---:|"] + rows
+    (out / "python_speed.md").write_text("\n".join(md) + "\n")
+    print("\n".join(md[-len(rows) - 4:]))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--n", type=int, default=100000)
     ap.add_argument("--repeats", type=int, default=15)
     ap.add_argument("--kernel", default="exact")
+    ap.add_argument("--star", type=int, default=2000, help="spikes of the stars of the exact-values table")
+    ap.add_argument("--exact-repeats", type=int, default=5)
     ap.add_argument("--out", default=str(pathlib.Path(__file__).resolve().parent / "results"))
     args = ap.parse_args()
 
@@ -162,6 +229,8 @@ def main():
            f"{g.area!r} (GEOS)."]
     (out / "python_speed.md").write_text("\n".join(md) + "\n")
     print("\n".join(md))
+
+    exact_costs(args, a, b, report, md, out)
 
     import matplotlib
     matplotlib.use("Agg")

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/ring_rules.hpp"
@@ -24,9 +25,9 @@ constexpr std::uint32_t ewkb_z = 0x80000000u;
 constexpr std::uint32_t ewkb_m = 0x40000000u;
 constexpr std::uint32_t ewkb_srid = 0x20000000u;
 
-// A point's two doubles: the smallest amount of input a vertex can take, so no count can
-// ask for more elements than bytes_left / 16.
-constexpr std::size_t point_bytes = 16;
+// A coordinate's bytes: a vertex takes 2 to 4 of them (x y, then Z and/or M), so no count
+// can ask for more elements than bytes_left / (8 * coordinates).
+constexpr std::size_t coordinate_bytes = 8;
 
 std::string type_name(std::uint32_t base) {
   switch (base) {
@@ -57,7 +58,7 @@ struct Where {
 
 class WkbReader {
  public:
-  explicit WkbReader(std::string_view bytes) : bytes_(bytes) {}
+  WkbReader(std::string_view bytes, std::vector<std::string>* part_names) : bytes_(bytes), part_names_(part_names) {}
 
   MultiPolygon read() {
     if (bytes_.empty()) fail(0, "empty input: expected a WKB Polygon, MultiPolygon or GeometryCollection");
@@ -121,22 +122,32 @@ class WkbReader {
     return n;
   }
 
-  // Byte order and type of the geometry at pos_; returns its 2D type code.
+  // Byte order and type of the geometry at pos_; returns its 2D type code. Z and M (ISO's
+  // 1000s or the extended flags) set the coordinates per vertex, the same for the whole input
+  // as in read_wkt: the extra ones are checked and dropped (the operation is planar).
   std::uint32_t read_header(bool& little) {
     little = read_byte_order();
     const std::size_t at = pos_;
     std::uint32_t type = read_raw<std::uint32_t>(little, "a geometry type");
-    if (type & (ewkb_z | ewkb_m)) fail(at, "Z and M coordinates are not supported; give 2D coordinates");
+    int coordinates = 2 + ((type & ewkb_z) ? 1 : 0) + ((type & ewkb_m) ? 1 : 0);
+    const bool extended = (type & (ewkb_z | ewkb_m)) != 0;
+    type &= ~(ewkb_z | ewkb_m);
     if (type & ewkb_srid) {
       type &= ~ewkb_srid;
       read_raw<std::uint32_t>(little, "an SRID");
     }
     const std::uint32_t base = type % 1000;
     if (type >= 1000 && type < 4000 && !type_name(base).empty()) {
-      fail(at, type_name(base) + " with Z or M coordinates (type " + std::to_string(type) +
-                   ") is not supported; give 2D coordinates");
+      if (extended) fail(at, "geometry type " + std::to_string(type) + " has both ISO and extended Z/M flags");
+      coordinates = 2 + static_cast<int>(type / 1000 == 3 ? 2 : 1);
+      type = base;
     }
     if (type != base || type_name(base).empty()) fail(at, "unknown geometry type " + std::to_string(type));
+    if (coordinates_ != 0 && coordinates != coordinates_) {
+      fail(at, type_name(base) + " has " + std::to_string(coordinates) +
+                   " coordinates per vertex, but the geometries before have " + std::to_string(coordinates_));
+    }
+    coordinates_ = coordinates;
     return base;
   }
 
@@ -181,7 +192,7 @@ class WkbReader {
     for (std::uint32_t r = 0; r < rings; ++r) {
       where_.ring = static_cast<long>(r);
       const std::size_t ring_at = pos_;
-      const std::uint32_t n = read_count(little, "point count", point_bytes);
+      const std::uint32_t n = read_count(little, "point count", coordinate_bytes * static_cast<std::size_t>(coordinates_));
       if (n == 0) {
         // As in WKT: an empty hole adds nothing, an empty shell would orphan its holes.
         if (r == 0) fail(ring_at, "a shell ring cannot be empty; an empty polygon has no rings");
@@ -197,6 +208,12 @@ class WkbReader {
         if (!std::isfinite(x) || !std::isfinite(y)) {
           fail(vertex_at, std::string(std::isfinite(x) ? "y" : "x") + " coordinate is not finite");
         }
+        for (int c = 2; c < coordinates_; ++c) {
+          const std::size_t extra_at = pos_;
+          if (!std::isfinite(read_raw<double>(little, c == 2 ? "a third coordinate" : "a fourth coordinate"))) {
+            fail(extra_at, std::string(c == 2 ? "third" : "fourth") + " coordinate is not finite");
+          }
+        }
         ring.push_back(Point{x, y});
       }
       const io_detail::OgcRingProblem problem = io_detail::check_ogc_ring(ring);
@@ -210,19 +227,26 @@ class WkbReader {
         polygon.holes.push_back(std::move(ring));
       }
     }
+    if (!polygon.shell.empty()) {
+      result_.push_back(std::move(polygon));
+      if (part_names_ != nullptr) part_names_->push_back("polygon " + std::to_string(where_.polygon));
+    }
     where_ = {};
-    if (!polygon.shell.empty()) result_.push_back(std::move(polygon));
   }
 
   std::string_view bytes_;
   std::size_t pos_ = 0;
   std::size_t polygon_count_ = 0;
+  int coordinates_ = 0;  // per vertex, once the first header is read: 2, 3 (Z or M) or 4 (ZM)
   Where where_;
   MultiPolygon result_;
+  std::vector<std::string>* part_names_;
 };
 
 }  // namespace
 
-MultiPolygon read_wkb(std::string_view bytes) { return WkbReader(bytes).read(); }
+MultiPolygon read_wkb(std::string_view bytes, std::vector<std::string>* part_names) {
+  return WkbReader(bytes, part_names).read();
+}
 
 }  // namespace mk

@@ -183,22 +183,48 @@ def compute(op, a, b, *, kernel=None, regular=True, a_type=None, b_type=None, ar
                                       bool(exact)))
     if errors not in ("raise", "return"):
         raise UsageError(f"errors must be 'raise' or 'return', not {errors!r}")
-    la = [_typed(as_polygon(x, f"A[{i}]"), a_type) for i, x in enumerate(a)] if batch_a \
-        else [_typed(as_polygon(a, "A"), a_type)]
-    lb = [_typed(as_polygon(x, f"B[{i}]"), b_type) for i, x in enumerate(b)] if batch_b \
-        else [_typed(as_polygon(b, "B"), b_type)]
-    out = _mkbool.compute_many(op, la, lb, kernel, bool(regular), bool(area_exact), bool(exact),
-                               0 if threads is None else int(threads))
-    results = []
-    for i, r in enumerate(out):
-        if isinstance(r, tuple):
-            error = _RAISE[r[0]](f"pair {i}: {r[1]}")
+    for t in (a_type, b_type):
+        if t is not None and t not in ("island", "hole"):
+            raise UsageError(f"unknown polygon type '{t}' (island or hole)")
+    if batch_a and batch_b and len(a) != len(b) and 1 not in (len(a), len(b)):
+        raise UsageError(f"the sequences of A and B have different lengths ({len(a)} and {len(b)}); give equal "
+                         "lengths or one polygon")
+    # Inputs that cannot be read are that pair's error, as the operation's own errors are.
+    la, ea = _convert_many(a, "A", a_type, batch_a)
+    lb, eb = _convert_many(b, "B", b_type, batch_b)
+    n = max(len(la), len(lb))
+    pick = (lambda v, i: v[i] if len(v) > 1 else v[0])
+    errors_in = [pick(ea, i) or pick(eb, i) for i in range(n)]
+    todo = [i for i in range(n) if errors_in[i] is None]
+    out = _mkbool.compute_many(op, [pick(la, i) for i in todo], [pick(lb, i) for i in todo], kernel, bool(regular),
+                               bool(area_exact), bool(exact), 0 if threads is None else int(threads))
+    results = [None] * n
+    for i, r in zip(todo, out):
+        results[i] = _RAISE[r[0]](r[1]) if isinstance(r, tuple) else Result(r)
+    for i in range(n):
+        if errors_in[i] is not None:
+            results[i] = errors_in[i]
+        if isinstance(results[i], BaseException):
+            results[i] = type(results[i])(f"pair {i}: {results[i]}")
             if errors == "raise":
-                raise error
-            results.append(error)
-        else:
-            results.append(Result(r))
+                raise results[i]
     return results
+
+
+def _convert_many(objs, role, polygon_type, batch):
+    """The polygons of one side of a batch, and per polygon the error that refused it."""
+    if not batch:
+        p = _typed(as_polygon(objs, role), polygon_type)  # one polygon for every pair: raise now
+        return [p], [None]
+    polygons, errors = [], []
+    for i, x in enumerate(objs):
+        try:
+            polygons.append(_typed(as_polygon(x, f"{role}[{i}]"), polygon_type))
+            errors.append(None)
+        except Error as e:
+            polygons.append(None)
+            errors.append(e)
+    return polygons, errors
 
 
 def _typed(polygon, polygon_type):

@@ -121,7 +121,10 @@ def _from_rings(rings, polygon_type):
             raise _mkbool.InvalidInput(
                 f"an array of rings has shape (n, 2) for one ring or (k, n, 2) for k rings, got {rings.shape}")
     else:
-        rings = list(rings)
+        try:
+            rings = list(rings)
+        except TypeError:
+            raise _mkbool.InvalidInput(f"the rings of a polygon are a sequence, not {type(rings).__name__}") from None
         if rings and _is_pair(rings[0]):
             rings = [rings]
     arrays = [_ring(r, f"ring {i}") for i, r in enumerate(rings)]

@@ -1,5 +1,6 @@
 // Inputs into the library's polygon model: numpy rings, WKT, WKB (shapely's form), GeoJSON
-// and native JSON text; and rings back out as numpy arrays.
+// and native JSON text (multi-part OGC input checked as the command checks it, io/parts.hpp);
+// and rings back out as numpy arrays.
 // [MK89 §2.2] (rings plus type; one- and two-sided rings) [OGC06-103 §7, §8] [RFC7946]
 // Preconditions: the GIL is held.
 #include <cmath>
@@ -8,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "io/format.hpp"
+#include "io/parts.hpp"
 #include "io/wkb.hpp"
 #include "io/wkt.hpp"
 #include "module.hpp"
@@ -109,9 +111,16 @@ void bind_convert(py::module_& m) {
   }, py::arg("rings"), py::arg("type") = "island");
   // WKT, GeoJSON or native JSON, sniffed as the command does for inline text.
   m.def("from_text", [](const std::string& text) { return shared(read_polygon(text, "")); }, py::arg("text"));
-  m.def("from_wkt", [](const std::string& text) { return shared(to_polygon(read_wkt(text))); }, py::arg("text"));
-  m.def("from_wkb", [](const py::buffer& bytes) { return shared(to_polygon(read_wkb(buffer_bytes(bytes)))); },
-        py::arg("wkb"));
+  m.def("from_wkt", [](const std::string& text) {
+    PartNames names;
+    const MultiPolygon mp = read_wkt(text, &names.parts);
+    return shared(to_checked_polygon(mp, names));
+  }, py::arg("text"));
+  m.def("from_wkb", [](const py::buffer& bytes) {
+    PartNames names;
+    const MultiPolygon mp = read_wkb(buffer_bytes(bytes), &names.parts);
+    return shared(to_checked_polygon(mp, names));
+  }, py::arg("wkb"));
   m.def("from_result", [](const Result& r) {
     // The rounded result as input: its OGC polygons (bounded), or every area cycle with the
     // hole type when the result is unbounded (its region is then the closure of the

@@ -42,6 +42,7 @@ py::dict row_dict(const ResultRow& r) {
   d["op_ns"] = opt(r.op_ns);
   d["predicate_calls"] = opt(r.predicate_calls);
   d["predicate_fallbacks"] = opt(r.predicate_fallbacks);
+  d["predicate_stages"] = r.predicate_stages;
   d["vertices_in"] = opt(r.vertices_in);
   d["crossings"] = opt(r.crossings);
   d["vertices_out"] = opt(r.vertices_out);

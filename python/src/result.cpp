@@ -49,6 +49,7 @@ py::dict stats_dict(Result& r) {
   d["vertices_out"] = s.vertices_out;
   d["rounded_valid"] = r.rounded_valid();
   d["area"] = s.area ? py::object(py::float_(*s.area)) : py::object(py::none());
+  d["area_beyond_double"] = s.area_beyond_double;
   d["area_exact"] = s.area_exact ? py::object(py::str(*s.area_exact)) : py::object(py::none());
   return d;
 }

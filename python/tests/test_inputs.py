@@ -108,7 +108,9 @@ def test_bad_inputs_are_refused_with_where():
     assert_invalid("LINESTRING(0 0,1 1)", "LINESTRING is not a polygonal geometry")
     assert_invalid(b"\x01\x03\x00\x00", "A (WKB): WKB byte 1: unexpected end of input")
     assert_invalid(sg.LineString([(0, 0), (1, 1)]), "A (shapely WKB): WKB byte 0: LineString is not a polygonal")
-    assert_invalid(sg.Polygon([(0, 0, 1), (1, 0, 1), (0, 1, 1)]), "Z and M coordinates are not supported")
+    # multi-part input read as OGC means it, or refused (never reinterpreted by nesting)
+    assert_invalid(sg.MultiPolygon([sg.box(0, 0, 3, 3), sg.box(1, 1, 2, 2)]),
+                   "A (shapely WKB): polygon 1 lies inside polygon 0; the parts of a multi-part polygon must not overlap")
     assert_invalid({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1]]]}, "A (GeoJSON mapping): GeoJSON at")
     assert_invalid(np.array([[0, 0], [1, np.nan], [0, 1]]), "A: ring 0, vertex 1: y coordinate is not finite")
     assert_invalid([np.array([[0, 0], [1, 0], [0, 1]]), np.zeros((3, 3))], "A: ring 1: expected vertices of shape (n, 2)")
@@ -127,7 +129,9 @@ def test_messages_are_the_commands(cli):
         "POLYGON((0 0,2 2,2 0,0 2,0 0))",
         "MULTIPOLYGON(((0 0,1 0,0 1,0 0)),((0 0,1 0)))",
         "POINT(1 2)",
-        "POLYGON Z((0 0 0,1 0 0,0 1 0,0 0 0))",
+        "POLYGON Z((0 0 0,1 0 0,0 1 0,0 0))",
+        "MULTIPOLYGON(((0 0,2 0,2 2,0 2,0 0)),((1 1,3 1,3 3,1 3,1 1)))",
+        "POLYGON((0 0,4 0,4 4,0 4,0 0),(5 5,6 5,6 6,5 5))",
     ]
     other = "POLYGON((0 0,1 0,0 1,0 0))"
     for text in cases:
@@ -155,6 +159,16 @@ def test_unknown_options_and_kernels():
     with pytest.raises(mkbool.UsageError, match="issue 12"):
         mkbool.union(SQUARE_WKT, SQUARE_WKT, grid_size=0.5)
     assert mkbool.union(SQUARE_WKT, SQUARE_WKT, fill_rule=None, grid_size=None).area == 15
+
+
+def test_z_and_m_are_dropped_as_the_command_drops_them(cli):
+    flat = sg.Polygon([(0, 0), (4, 0), (0, 4)])
+    with_z = sg.Polygon([(0, 0, 1), (4, 0, 2), (0, 4, 3)])
+    for form in (with_z, with_z.wkb, shapely.wkb.dumps(with_z, srid=4326), with_z.wkt):
+        assert rings_of(form) == rings_of(flat), type(form)
+    text = "POLYGON ZM((0 0 1 2,4 0 1 2,0 4 1 2,0 0 1 2))"
+    run = subprocess.run([cli, "union", text, "POLYGON((1 1,5 1,1 5,1 1))"], capture_output=True, text=True, check=True)
+    assert mkbool.union(text, "POLYGON((1 1,5 1,1 5,1 1))").wkt == run.stdout.strip()
 
 
 def test_shapely_wkb_variants():

@@ -58,14 +58,21 @@ def test_broadcast_and_errors():
     assert areas == [4, 4, 4, 2, 0, 0]
     assert [r.area_exact for r in mkbool.intersection(np.array(others, dtype=object), square)] == areas
     bad = others[:2] + ["POLYGON((0 0,2 2,2 0,0 2,0 0))"] + others[2:]
-    with pytest.raises(mkbool.InvalidInput, match="^pair 2: polygon A"):
+    with pytest.raises(mkbool.InvalidInput, match=r"^pair 2: A\[2\] \(WKT\): polygon 0, ring 0: its edge from \(0 0\) to \(2 2\) crosses"):
         mkbool.intersection(bad, square)
     mixed = mkbool.intersection(bad, square, errors="return")
     assert isinstance(mixed[2], mkbool.InvalidInput) and mixed[3].area_exact == 4
     with pytest.raises(mkbool.UsageError, match="different lengths"):
         mkbool.intersection(others[:2], others[:3])
-    with pytest.raises(mkbool.InvalidInput, match=r"^A\[1\] \(WKT\)"):
+    # inputs that cannot be read are their pair's error too, the other pairs run
+    with pytest.raises(mkbool.InvalidInput, match=r"^pair 1: A\[1\] \(WKT\)"):
         mkbool.intersection([square, "POLYGON((0 0))"], square)
+    mixed = mkbool.intersection([square, "POLYGON((0 0))", 42], [others[0], others[1], None], errors="return")
+    assert mixed[0].area_exact == 4
+    assert str(mixed[1]).startswith("pair 1: A[1] (WKT)") and str(mixed[2]).startswith("pair 2: A[2]: cannot read")
+    # one polygon against many that cannot be read: refused at once, not once per pair
+    with pytest.raises(mkbool.InvalidInput, match=r"^B \(WKT\)"):
+        mkbool.intersection(others, "POLYGON((0 0))", errors="return")
 
 
 def test_the_gil_is_released_during_the_operation():

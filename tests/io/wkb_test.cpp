@@ -165,10 +165,15 @@ TEST(ioWkb, RejectsMalformedInputWithTheOffset) {
                       "WKB byte 9 (polygon 0, ring 0): point count 1000000"));
   EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(3).u32(1).u32(2).f64(0).f64(0).f64(1).str()); },
                       "(polygon 0, ring 0): point count 2 needs at least 32 more bytes, only 24 left"));
-  EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(1003).u32(0).str()); },
-                      "WKB byte 1: Polygon with Z or M coordinates (type 1003) is not supported"));
-  EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(3 | 0x80000000u).u32(0).str()); },
-                      "WKB byte 1: Z and M coordinates are not supported"));
+  // Z and M: one count of coordinates per vertex for the whole input, the extra ones finite.
+  EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(7).u32(2).header(3).u32(0).header(1003).u32(0).str()); },
+                      "WKB byte 19: Polygon has 3 coordinates per vertex, but the geometries before have 2"));
+  EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(1003 | 0x80000000u).u32(0).str()); },
+                      "WKB byte 1: geometry type 1003 has both ISO and extended Z/M flags"));
+  EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(1003).u32(1).u32(1).f64(0).f64(0).f64(std::nan("")).str()); },
+                      "WKB byte 29 (polygon 0, ring 0, vertex 0): third coordinate is not finite"));
+  EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(3003).u32(1).u32(3).f64(0).str()); },
+                      "point count 3 needs at least 96 more bytes, only 8 left"));
   EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(2).u32(0).str()); },
                       "LineString is not a polygonal geometry"));
   EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(17).u32(0).str()); }, "Triangle is not supported"));
@@ -189,6 +194,27 @@ TEST(ioWkb, RejectsMalformedInputWithTheOffset) {
                       "fewer than 3 distinct points"));
   EXPECT_TRUE(rejects([] { read_wkb(Bytes().header(3).u32(1).u32(0).str()); },
                       "(polygon 0, ring 0): a shell ring cannot be empty"));
+}
+
+// Z and M coordinates (ISO codes and PostGIS's flags, as shapely writes a 3D polygon) are
+// read and dropped: the same rings as the 2D encoding.
+TEST(ioWkb, DropsZAndM) {
+  const std::vector<Point> ring = {{0, 0}, {4, 0}, {0, 4}, {0, 0}};
+  const std::string flat = write_wkt(read_wkb(Bytes().header(3).u32(1).ring(ring).str()));
+  for (const std::uint32_t type : {1003u, 2003u, 3 | 0x80000000u, 3 | 0x40000000u, 3003u, 3 | 0xC0000000u}) {
+    const int extra = (type == 3003u || type == (3 | 0xC0000000u)) ? 2 : 1;
+    Bytes b;
+    b.header(type).u32(1).u32(static_cast<std::uint32_t>(ring.size()));
+    for (const Point& p : ring) {
+      b.f64(p.x).f64(p.y);
+      for (int c = 0; c < extra; ++c) b.f64(7.5);
+    }
+    EXPECT_EQ(write_wkt(read_wkb(b.str())), flat) << "type " << type;
+  }
+  Bytes multi;
+  multi.header(6 | 0x80000000u).u32(1).header(3 | 0x80000000u).u32(1).u32(4);
+  for (const Point& p : ring) multi.f64(p.x).f64(p.y).f64(1);
+  EXPECT_EQ(write_wkt(read_wkb(multi.str())), flat);
 }
 
 // Every prefix of a valid byte string is an error, never a crash or a partial result.
