@@ -17,12 +17,13 @@ ctest --test-dir build -j "$jobs" --output-on-failure
 echo "== Python package: pip install offline, tests against the installed copy"
 # ctest ran the Python tests on the build tree (pythonTests); here the package goes through
 # pip as a user installs it (python/setup.py, reusing the Release build) into a scratch
-# folder, and the docs and input tests run against that copy.
+# folder, and the docs, input and hostile-input tests run against that copy (seconds).
 site="$(mktemp -d)"
 MKBOOL_CMAKE_BUILD_DIR=build /usr/bin/python3 -m pip install --quiet --root-user-action=ignore --no-build-isolation --no-deps \
   --no-index --target "$site" ./python
 PYTHONPATH="$site" MKBOOL_EXPECTED_PACKAGE="$site/mkbool" \
-  /usr/bin/python3 -m pytest -q -p no:cacheprovider python/tests/test_docs.py python/tests/test_inputs.py
+  /usr/bin/python3 -m pytest -q -p no:cacheprovider python/tests/test_docs.py python/tests/test_inputs.py \
+  python/tests/test_hostile.py
 rm -rf "$site"
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer"

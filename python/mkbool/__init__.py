@@ -103,7 +103,7 @@ class Result:
     @property
     def area_exact(self):
         if self._area_exact is None:
-            self._area_exact = fractions.Fraction(self._r._area_exact_text)
+            self._area_exact = fractions.Fraction(*self._r._area_exact_ratio)
         return self._area_exact
 
     @property
@@ -111,7 +111,7 @@ class Result:
         if self._exact_rings is None:
             F = fractions.Fraction
             self._exact_rings = [
-                [(F(c[i]), F(c[i + 1])) for i in range(0, len(c), 2)] for c in self._r._exact_text
+                [(F(*c[i]), F(*c[i + 1])) for i in range(0, len(c), 2)] for c in self._r._exact_ratios
             ]
         return self._exact_rings
 

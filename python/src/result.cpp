@@ -3,7 +3,10 @@
 // than the operation (exact area, exact coordinates) computed only when asked.
 // [MK89 §3.1 step 6] (irreducible result polygons and their types) [MK89 §2.2] (forest)
 // Preconditions: the GIL is held except inside run_compute.
+#include <gmpxx.h>
+
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "arithmetic/kernels/exact_kernel.hpp"
@@ -37,6 +40,23 @@ py::array_t<double> oriented_ring(const Ring& ring, bool counterclockwise) {
   if (orientation == 0 || (orientation > 0) == counterclockwise) return ring_array(ring, true);
   Ring reversed(ring.rbegin(), ring.rend());
   return ring_array(reversed, true);
+}
+
+// A rational "p/q" or "p" as two Python ints, read through hexadecimal: Python refuses to
+// read decimal integers of more than 4300 digits (sys.get_int_max_str_digits), which exact
+// areas and coordinates reach; powers of two as bases have no limit.
+py::int_ python_int(const mpz_class& z) {
+  const std::string hex = z.get_str(16);
+  PyObject* v = PyLong_FromString(hex.c_str(), nullptr, 16);
+  if (v == nullptr) throw py::error_already_set();
+  return py::reinterpret_steal<py::int_>(v);
+}
+
+py::tuple ratio(const std::string& text) {
+  mpq_class q;
+  if (q.set_str(text, 10) != 0) throw std::runtime_error("not a rational: " + text);
+  q.canonicalize();
+  return py::make_tuple(python_int(q.get_num()), python_int(q.get_den()));
 }
 
 py::dict stats_dict(Result& r) {
@@ -166,6 +186,17 @@ void bind_result(py::module_& m) {
       })
       .def_property_readonly("_area_exact_text", &Result::area_exact)
       .def_property_readonly("_exact_text", &Result::exact_coordinates)
+      // As (numerator, denominator) ints: what mkbool.Result turns into Fractions.
+      .def_property_readonly("_area_exact_ratio", [](Result& r) { return ratio(r.area_exact()); })
+      .def_property_readonly("_exact_ratios", [](Result& r) {
+        py::list out;
+        for (const auto& cycle : r.exact_coordinates()) {
+          py::list c;
+          for (const auto& v : cycle) c.append(ratio(v));
+          out.append(c);
+        }
+        return out;
+      })
       .def_property_readonly("rounded_valid", &Result::rounded_valid)
       .def_property_readonly("polygons", &Result::polygons)
       .def_property_readonly("rings", &Result::rings)

@@ -36,6 +36,11 @@ HOSTILE = [
     ("mkbool.union('POLYGON((0 0,1 0,1 1))', SQ)", "InvalidInput", "ring has 3 coordinates"),
     ("mkbool.union('{', SQ)", "InvalidInput", "A (JSON)"),
     ("mkbool.union('POLYGON((0 0,1 0,0 1,0 0' + ',0 0' * 5 + '\\x00', SQ)", "InvalidInput", "A (WKT)"),
+    # nesting far deeper than any polygon: the readers do not recurse on it
+    ("mkbool.union('{\"type\": \"Polygon\", \"coordinates\": ' + '[' * 200000 + ']' * 200000 + '}', SQ)",
+     "InvalidInput", "A (JSON)"),
+    ("mkbool.union('POLYGON' + '(' * 200000 + ')' * 200000, SQ)", "InvalidInput", "A (WKT)"),
+    ("mkbool.union(b'\\x01\\x07\\x00\\x00\\x00\\x01\\x00\\x00\\x00' * 20000, SQ)", "InvalidInput", "A (WKB)"),
     # malformed WKB: counts far beyond the bytes, every type code's neighbours
     ("mkbool.union(b'\\x01\\x03\\x00\\x00\\x00\\xff\\xff\\xff\\xff', SQ)", "InvalidInput", "ring count 4294967295"),
     ("mkbool.union(b'\\x01\\x06\\x00\\x00\\x00\\xff\\xff\\xff\\x7f', SQ)", "InvalidInput", "polygon count"),

@@ -162,3 +162,21 @@ def test_repr_and_svg():
     r = mkbool.xor(A, B)
     assert repr(r).startswith("<mkbool.Result xor (exact): ")
     assert r.svg.startswith("<svg") or r.svg.startswith("<?xml")
+
+
+def star(n, phase):
+    t = 2 * np.pi * np.arange(2 * n) / (2 * n) + phase
+    r = np.where(np.arange(2 * n) % 2 == 0, 100.0, 50.0)
+    return np.column_stack([r * np.cos(t), r * np.sin(t)])
+
+
+def test_exact_values_beyond_pythons_decimal_digit_limit():
+    # Two stars turned by half a spike: about 4n crossing points whose exact coordinates,
+    # and the exact area over them, have more digits than Python reads from a decimal
+    # string (4300 by default): they reach Python through hexadecimal instead.
+    r = mkbool.intersection(star(200, 0.0), star(200, np.pi / 400))
+    assert r.area_exact.denominator.bit_length() > 4300 * 3.33
+    assert r.area_exact == typed_area(r)  # from the exact vertices, summed here
+    assert float(r.area_exact) == r.area  # both correctly rounded
+    assert all(float(x) == v for ring, arr in zip(r.exact_rings, r.rings) for p, row in zip(ring, arr)
+               for x, v in zip(p, row))  # the rounded vertices are the exact ones rounded to nearest
