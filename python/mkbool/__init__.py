@@ -192,7 +192,7 @@ def compute(op, a, b, *, kernel=None, regular=True, a_type=None, b_type=None, ar
     # Inputs that cannot be read are that pair's error, as the operation's own errors are.
     la, ea = _convert_many(a, "A", a_type, batch_a)
     lb, eb = _convert_many(b, "B", b_type, batch_b)
-    n = max(len(la), len(lb))
+    n = 0 if not la or not lb else max(len(la), len(lb))
     pick = (lambda v, i: v[i] if len(v) > 1 else v[0])
     errors_in = [pick(ea, i) or pick(eb, i) for i in range(n)]
     todo = [i for i in range(n) if errors_in[i] is None]

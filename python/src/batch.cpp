@@ -64,7 +64,9 @@ void bind_batch(py::module_& m) {
         }
         Request request{operation_named(op), {}};
         request.options = make_options(request.op, kernel, regular, area_exact, exact);
-        const std::size_t n = std::max(as.size(), bs.size());
+        // No pair when either side is an empty sequence (one polygon is broadcast only
+        // against a sequence that has pairs to make).
+        const std::size_t n = as.empty() || bs.empty() ? 0 : std::max(as.size(), bs.size());
         const auto a_at = [&](std::size_t i) -> const InputPolygon& { return as.size() == 1 ? as[0] : as[i]; };
         const auto b_at = [&](std::size_t i) -> const InputPolygon& { return bs.size() == 1 ? bs[0] : bs[i]; };
         std::vector<std::optional<BooleanOutput>> outputs(n);

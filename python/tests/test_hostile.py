@@ -75,6 +75,9 @@ HOSTILE = [
     ("mkbool.union([SQ, SQ], [SQ, SQ, SQ])", "UsageError", "different lengths"),
     ("mkbool.union([SQ], [SQ], threads=10**30)", "TypeError", ""),
     ("mkbool.union([SQ], [SQ], errors='ignore')", "UsageError", "errors must be"),
+    ("mkbool.union(np.array([], dtype=object), SQ) == [] or 1 / 0", "", "returned"),
+    ("mkbool.union(np.array([], dtype=object), [SQ, SQ])", "UsageError", "different lengths (0 and 2)"),
+    ("mkbool._mkbool.compute_many('union', [], [mkbool.as_polygon(SQ)]) == [] or 1 / 0", "", "returned"),
     ("mkbool.union([SQ, 'POINT(0 0)'], SQ)", "InvalidInput", "A[1] (WKT)"),
     # results asked in a form they do not have
     ("mkbool.union(SQ, SQ, a_type='hole').wkt", "OutputError", "unbounded"),
