@@ -67,9 +67,25 @@ def unregister_generator(name):
     _python_generators.pop(name, None)
 
 
+def _seeds(seeds):
+    """Seeds per configuration as mkbool-experiment's --seeds takes them (0 or None: the
+    level's default)."""
+    if seeds is None or (isinstance(seeds, numbers.Integral) and not isinstance(seeds, bool) and seeds == 0):
+        return 0
+    if not isinstance(seeds, numbers.Integral) or isinstance(seeds, bool) or not 1 <= seeds <= 1_000_000:
+        raise _mkbool.UsageError(f"seeds={seeds!r}: a whole number of seeds from 1 to 1000000")
+    return int(seeds)
+
+
+def _base_seed(base_seed):
+    if not isinstance(base_seed, numbers.Integral) or isinstance(base_seed, bool) or not 0 <= base_seed < 2**64:
+        raise _mkbool.UsageError(f"base_seed={base_seed!r}: a whole number from 0 to 2**64 - 1")
+    return int(base_seed)
+
+
 def plan(generators=None, level="quick", seeds=0, base_seed=1):
     """The built-in cases a sweep runs (specs: index, generator, variant, params, seed)."""
-    return _h.plan(list(generators or []), level, int(seeds), int(base_seed))
+    return _h.plan(list(generators or []), level, _seeds(seeds), _base_seed(base_seed))
 
 
 def _backends(kernels, peers):
@@ -125,6 +141,7 @@ def sweep(generators=None, *, level="quick", seeds=None, base_seed=1, kernels=No
     in forked worker processes with a time limit per run (``isolate``), as mkbool-experiment
     does; Python generators are called here, in order of their seeds, and their cases run in
     C++ threads. Rows are dicts keyed by :func:`columns` (a DataFrame with ``as_frame``)."""
+    seeds, base_seed = _seeds(seeds), _base_seed(base_seed)
     names = list(generators) if generators is not None else [g["name"] for g in _h.generators()] + \
         list(_python_generators)
     builtin = [n for n in names if n not in _python_generators]

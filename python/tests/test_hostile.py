@@ -90,6 +90,10 @@ HOSTILE = [
     ("mkbool.harness.run_case('POINT(0 0)', SQ, kernels=['exact'])", "InvalidInput", "A (WKT)"),
     ("mkbool.harness.run_case(SQ, SQ, kernels=['nope'])", "UsageError", "back end 'nope' is not built"),
     ("mkbool.harness.run_case(SQ, SQ, seed=-1)", "UsageError", "non-negative"),
+    ("mkbool.harness.plan(['rotated'], seeds=-1)", "UsageError", "seeds=-1: a whole number of seeds from 1 to"),
+    ("mkbool.harness.plan(['rotated'], seeds=2**40)", "UsageError", "from 1 to 1000000"),
+    ("mkbool.harness.sweep(['rotated'], seeds=2.5)", "UsageError", "seeds=2.5"),
+    ("mkbool.harness.plan(['rotated'], base_seed=-5)", "UsageError", "base_seed=-5"),
     ("mkbool.harness.register_generator('bad', 5)", "UsageError", "a generator is a function"),
     # a Python generator that raises or returns nonsense: a row saying so, not an exception
     ("[r['message'] for r in (mkbool.harness.register_generator('div0', lambda seed: 1 / 0) and "
