@@ -180,3 +180,19 @@ def test_exact_values_beyond_pythons_decimal_digit_limit():
     assert float(r.area_exact) == r.area  # both correctly rounded
     assert all(float(x) == v for ring, arr in zip(r.exact_rings, r.rings) for p, row in zip(ring, arr)
                for x, v in zip(p, row))  # the rounded vertices are the exact ones rounded to nearest
+
+
+def test_the_kernels_are_the_commands(cli):
+    # the command's list of built kernels (its usage error names them) is the module's, and
+    # each gives the same result through both
+    run = subprocess.run([cli, "xor", A, B, "--kernel", "no-such-kernel"], capture_output=True, text=True)
+    assert run.returncode == 2
+    listed = run.stderr.split("(built: ", 1)[1].split(")", 1)[0].split(", ")
+    assert listed == mkbool.kernel_names()
+    assert {"rational-mp", "rational-cpp"} <= {k for k in listed if mkbool.is_exact_kernel(k)}
+    with pytest.raises(mkbool.UsageError) as e:
+        mkbool.xor(A, B, kernel="no-such-kernel")
+    assert str(e.value) == "unknown kernel 'no-such-kernel' (built: " + ", ".join(listed) + ")"
+    for k in listed:
+        run = subprocess.run([cli, "xor", A, B, "--kernel", k], capture_output=True, text=True, check=True)
+        assert run.stdout.strip() == mkbool.xor(A, B, kernel=k).wkt, k
