@@ -179,7 +179,6 @@ std::size_t slot_count(const RunOptions& o) { return o.ops.size() * o.regular.si
 void run_case(const IndexedCase& c, const RunOptions& o, std::size_t first_slot,
               const std::function<void(std::size_t)>& on_start, const std::function<void(const ResultRow&)>& on_row,
               const std::function<void(std::size_t)>& on_generated) {
-  const std::size_t per_group = 1 + o.kernels.size();
   Case cs;
   try {
     cs = make_case(c.spec);
@@ -193,6 +192,13 @@ void run_case(const IndexedCase& c, const RunOptions& o, std::size_t first_slot,
     return;
   }
   if (on_generated) on_generated(cs.size());
+  run_built_case(c, cs, o, first_slot, on_start, on_row);
+}
+
+void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, std::size_t first_slot,
+                    const std::function<void(std::size_t)>& on_start,
+                    const std::function<void(const ResultRow&)>& on_row) {
+  const std::size_t per_group = 1 + o.kernels.size();
   const bool paper_variants = cs.size() <= o.paper_reference_limit;
   const bool external = is_external_generator(c.spec.generator);
   const bool with_peers = runs_peers(c, cs.size(), o) &&

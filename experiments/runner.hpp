@@ -62,6 +62,12 @@ void run_case(const IndexedCase& c, const RunOptions& options, std::size_t first
               const std::function<void(std::size_t)>& on_start, const std::function<void(const ResultRow&)>& on_row,
               const std::function<void(std::size_t)>& on_generated = {});
 
+// As run_case, on a case built elsewhere (a generator written in Python, through the
+// module): `c.spec` names it in the rows, `built` holds its inputs.
+void run_built_case(const IndexedCase& c, const Case& built, const RunOptions& options, std::size_t first_slot,
+                    const std::function<void(std::size_t)>& on_start,
+                    const std::function<void(const ResultRow&)>& on_row);
+
 std::size_t slot_count(const RunOptions& options);
 
 // The oracle_agrees column: for each (case, op, regular) with a cgal_epeck run, every exact

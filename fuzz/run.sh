@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the fuzz targets with libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer
-# (clang++, outside the CMake build) and runs each for a number of seconds: the three input
+# (clang++, outside the CMake build) and runs each for a number of seconds: the four input
 # parsers, and the whole operation (fuzz_operation: two polygons from the bytes, every
 # operation, exact and rational kernels agreeing exactly). When the CMake build has made
 # build/bin/fuzz_seed_corpus, fuzz_operation's scratch corpus is first seeded with cases of
@@ -29,11 +29,12 @@ declare -A sources=(
   [fuzz_wkt]="io/wkt_reader.cpp io/wkt_writer.cpp io/format.cpp io/geojson_reader.cpp io/geojson_writer.cpp io/native_json.cpp io/parts.cpp io/ring_rules.cpp"
   [fuzz_geojson]="io/geojson_reader.cpp io/geojson_writer.cpp io/format.cpp io/wkt_reader.cpp io/native_json.cpp io/parts.cpp io/ring_rules.cpp"
   [fuzz_native_json]="io/native_json.cpp io/ring_rules.cpp"
+  [fuzz_wkb]="io/wkb_reader.cpp io/wkb_writer.cpp io/ring_rules.cpp"
   [fuzz_operation]="api/mkbool.cpp io/wkt_writer.cpp io/geojson_writer.cpp io/native_json.cpp io/svg.cpp io/ring_rules.cpp"
 )
 
 failed=()
-for target in ${MK_FUZZ_TARGETS:-fuzz_wkt fuzz_geojson fuzz_native_json fuzz_operation}; do
+for target in ${MK_FUZZ_TARGETS:-fuzz_wkt fuzz_geojson fuzz_native_json fuzz_wkb fuzz_operation}; do
   echo "== building $target"
   files=("$root/fuzz/$target.cpp")
   for s in ${sources[$target]}; do files+=("$root/$s"); done

@@ -8,6 +8,8 @@ packages=(
   libgtest-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev
   libgeos-dev libpolyclipping-dev zlib1g-dev
   python3-matplotlib
+  pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest python3-shapely python3-pandas
+  python3-setuptools python3-wheel python3-pip python3-venv
   clang libclang-rt-14-dev
 )
 missing=()
