@@ -3,6 +3,7 @@
 #include "cli/command.hpp"
 
 #include <cstdio>
+#include <tuple>
 
 #include "api/mkbool.hpp"
 #include "cli/exit_codes.hpp"
@@ -30,18 +31,17 @@ std::string with_final_newline(std::string text) {
 // The result's text in the requested format. An unbounded result has no WKT or GeoJSON
 // form (both describe finite areas), so it is refused with the way out rather than cut down
 // to its bounded part.
-std::string format_output(const CommandOptions& o, const Polygon& a, const Polygon& b, const BooleanOutput& r) {
-  switch (o.format) {
+std::string format_output(OutputFormat format, const std::string& what, const Polygon& a, const Polygon& b,
+                          const BooleanOutput& r) {
+  switch (format) {
     case OutputFormat::wkt:
     case OutputFormat::geojson:
       if (r.output.unbounded) {
-        throw OutputError(std::string("the result of ") + std::string(operation_name(o.op)) + " of A (" +
-                          type_name(a.type) + ") and B (" + type_name(b.type) +
-                          ") is unbounded (hole type), which " +
-                          (o.format == OutputFormat::wkt ? "WKT" : "GeoJSON") +
+        throw OutputError("the result of " + what + " is unbounded (hole type), which " +
+                          (format == OutputFormat::wkt ? "WKT" : "GeoJSON") +
                           " cannot express; use --format json (or svg)");
       }
-      return with_final_newline(o.format == OutputFormat::wkt ? write_wkt(r.output) : write_geojson(r.output));
+      return with_final_newline(format == OutputFormat::wkt ? write_wkt(r.output) : write_geojson(r.output));
     case OutputFormat::native_json:
       return with_final_newline(write_native_json(r.output, r.stats.kernel));
     case OutputFormat::svg:
@@ -50,12 +50,29 @@ std::string format_output(const CommandOptions& o, const Polygon& a, const Polyg
   return {};
 }
 
+// Statistics: one JSON line on standard error.
+void print_stats(const BooleanOutput& result, const PredicateCounters& counters) {
+  const std::string line = stats_json(result, counters) + "\n";
+  std::fputs(line.c_str(), stderr);
+  std::fflush(stderr);
+}
+
 }  // namespace
 
 void run_command(const CommandOptions& o) {
   if (o.a == "-" && o.b == "-") throw UsageError("A and B cannot both be standard input ('-')");
-  Input in_a = read_input(o.a, "A");
-  Input in_b = read_input(o.b, "B");
+  Input in_a;
+  Input in_b;
+  if (o.fill_rule) {  // any rings: read as parts, unchecked
+    for (auto [in, arg, role] : {std::tuple{&in_a, &o.a, "A"}, std::tuple{&in_b, &o.b, "B"}}) {
+      PartsInput parts = read_parts(*arg, role);
+      in->polygon = fill_rule_polygon(parts.parts, *o.fill_rule);
+      in->name = std::move(parts.name);
+    }
+  } else {
+    in_a = read_input(o.a, "A");
+    in_b = read_input(o.b, "B");
+  }
   Polygon& a = in_a.polygon;
   Polygon& b = in_b.polygon;
   if (o.a_type) a.type = *o.a_type;
@@ -68,6 +85,7 @@ void run_command(const CommandOptions& o) {
   options.area = o.stats;  // the area is only reported in --stats
   options.area_exact = o.stats;
   options.exact_coordinates = o.format == OutputFormat::native_json;  // only the native format writes them
+  options.fill_rule = o.fill_rule;
   PredicateCounters::reset();
   BooleanOutput result;
   try {
@@ -82,14 +100,42 @@ void run_command(const CommandOptions& o) {
 
   // Statistics first: they describe the operation, which succeeded even when its result
   // cannot be written in the requested format.
-  if (o.stats) {
-    const std::string line = stats_json(result, counters) + "\n";
-    std::fputs(line.c_str(), stderr);
-    std::fflush(stderr);
-  }
-  const std::string text = format_output(o, a, b, result);
+  if (o.stats) print_stats(result, counters);
+  const std::string what =
+      std::string(operation_name(o.op)) + " of A (" + type_name(a.type) + ") and B (" + type_name(b.type) + ")";
   OutputFile out(o.output);
-  out.write(text);
+  out.write(format_output(o.format, what, a, b, result));
+  out.commit();
+}
+
+void run_parts_command(const PartsCommandOptions& o) {
+  const PartsInput in = read_parts(o.input, "INPUT");
+  BooleanOptions options;
+  options.kernel = o.kernel;
+  options.area = o.stats;
+  options.area_exact = o.stats;
+  options.exact_coordinates = o.format == OutputFormat::native_json;
+  options.fill_rule = o.fill_rule;
+  PredicateCounters::reset();
+  BooleanOutput result;
+  const char* what = "union-all";
+  switch (o.op) {
+    case PartsOperation::union_all: result = union_all(in.parts, options); break;
+    case PartsOperation::intersection_all:
+      what = "intersection-all";
+      if (in.parts.empty()) throw InvalidInput(in.name + ": intersection-all needs at least one polygon");
+      result = intersection_all(in.parts, options);
+      break;
+    case PartsOperation::make_valid:
+      what = "make-valid";
+      result = make_valid(in.parts, options);
+      break;
+  }
+  const PredicateCounters counters = PredicateCounters::read();
+  if (o.stats) print_stats(result, counters);
+  const Polygon drawn = fill_rule_polygon(in.parts, o.fill_rule.value_or(FillRule::evenodd));
+  OutputFile out(o.output);
+  out.write(format_output(o.format, what, drawn, Polygon{}, result));
   out.commit();
 }
 
