@@ -113,15 +113,14 @@ GroupedRings rings_of_parts(const MultiPolygon& parts, FillRule rule, bool one_g
 }  // namespace
 
 Polygon fill_rule_polygon(const MultiPolygon& mp, FillRule rule) {
-  Polygon p;
+  Polygon p = to_polygon(mp);
+  if (rule != FillRule::union_) return p;
+  validate_coordinates(p, "input");  // before the areas' signs are taken
+  std::size_t r = 0;
   for (const OgcPolygon& part : mp) {
-    if (rule != FillRule::union_) {
-      p.rings.push_back(part.shell);
-      for (const Ring& h : part.holes) p.rings.push_back(h);
-      continue;
-    }
-    p.rings.push_back(oriented(part.shell, true));
-    for (const Ring& h : part.holes) p.rings.push_back(oriented(h, false));
+    p.rings[r] = oriented(part.shell, true);
+    ++r;
+    for (const Ring& h : part.holes) p.rings[r++] = oriented(h, false);
   }
   return p;
 }

@@ -42,7 +42,7 @@ struct BooleanOptions {
   // each other freely: its region is the closure of the points whose winding number the rule
   // accepts (Clipper's meanings). Regular output only. Unset: the paper's domain (rings may
   // touch, never cross; regions by nesting), exactly as without this option.
-  std::optional<FillRule> fill_rule;
+  std::optional<FillRule> fill_rule = std::nullopt;
 };
 
 struct BooleanStats {
