@@ -13,7 +13,6 @@
 #include <cstdint>
 #include <numeric>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -52,12 +51,6 @@ struct WindingArrangement {
 };
 
 namespace detail {
-
-struct SegmentPairHash {
-  std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& p) const {
-    return std::hash<std::uint64_t>()(p.first * 0x9E3779B97F4A7C15ULL ^ p.second);
-  }
-};
 
 // Union-find over vertex ids; the representative is the smallest id, so that a crossing
 // lying on an input point becomes that point.
@@ -147,7 +140,6 @@ WindingArrangement<K> build_winding_arrangement(const std::vector<BasicRing<type
 
   // Every crossing and touching of two edges.
   EdgeInsertions inserted;
-  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::SegmentPairHash> crossing_id;
   const auto& pts = arr.points;
   for_each_candidate_pair<K>(pts, arr.x_rank, items, false, search, [&](int i, int j) {
     const SweepItem& a = items[i];
@@ -155,22 +147,19 @@ WindingArrangement<K> build_winding_arrangement(const std::vector<BasicRing<type
     if (a.lo == b.lo && a.hi == b.hi) return;  // the same segment: nothing to insert
     const auto rel = relate_segments_by_id<K>(pts, a.lo, a.hi, b.lo, b.hi);
     if (rel.proper_crossing) {
-      std::uint64_t ka = segment_key(a.lo, a.hi);
-      std::uint64_t kb = segment_key(b.lo, b.hi);
-      if (kb < ka) std::swap(ka, kb);
-      auto [it, fresh] = crossing_id.try_emplace({ka, kb}, arr.num_vertices());
-      if (fresh) {
-        arr.crossings.push_back(K::crossing(pts[a.lo], pts[a.hi], pts[b.lo], pts[b.hi]));
-        if constexpr (!K::is_exact) {
-          const mk::Point c = K::approx(arr.crossings.back());
-          if (!std::isfinite(c.x) || !std::isfinite(c.y)) {
-            throw KernelFailure(std::string("kernel ") + std::string(K::name) +
-                                ": a crossing point is not finite in its arithmetic");
-          }
+      // A new vertex per pair: where segments coincide (two rings sharing an edge) or three
+      // edges cross at one point, the repeats are merged below, being equal along an edge.
+      const int id = arr.num_vertices();
+      arr.crossings.push_back(K::crossing(pts[a.lo], pts[a.hi], pts[b.lo], pts[b.hi]));
+      if constexpr (!K::is_exact) {
+        const mk::Point c = K::approx(arr.crossings.back());
+        if (!std::isfinite(c.x) || !std::isfinite(c.y)) {
+          throw KernelFailure(std::string("kernel ") + std::string(K::name) +
+                              ": a crossing point is not finite in its arithmetic");
         }
       }
-      inserted.add(i, it->second);
-      inserted.add(j, it->second);
+      inserted.add(i, id);
+      inserted.add(j, id);
       return;
     }
     // vertex_on_edge and collinear_overlap: endpoints strictly inside the other edge.
@@ -180,7 +169,6 @@ WindingArrangement<K> build_winding_arrangement(const std::vector<BasicRing<type
     if (rel.b_inside_cd) inserted.add(j, a.hi);
   });
   items = {};
-  crossing_id = {};
 
   // Each edge's inserted vertices in order along it; equal neighbours are one point.
   const int num_edges = static_cast<int>(wa.edges.size());
