@@ -35,6 +35,13 @@ std::vector<int> link_windings(const WindingArrangement<K>& wa) {
   const Arrangement<K>& arr = wa.arr;
   const int G = wa.groups;
   const int num_links = static_cast<int>(wa.links.size());
+  // Counted apart, the groups cost a winding number each per link: refused past 2^27 numbers
+  // (512 MB) rather than exhausting memory.
+  if (static_cast<double>(num_links) * G > static_cast<double>(1 << 27)) {
+    throw InvalidInput(std::to_string(G) + " inputs counted apart on " + std::to_string(num_links) +
+                       " links would need more than 2^27 winding numbers; give fewer inputs (intersection-all keeps one "
+                       "per part)");
+  }
   // Link ends grouped by vertex (code 2 l at lo, 2 l + 1 at hi), each group in angular order.
   std::vector<int> begin(static_cast<std::size_t>(arr.num_vertices()) + 1, 0);
   for (const WindingLink& l : wa.links) {

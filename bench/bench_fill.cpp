@@ -1,6 +1,8 @@
 // BM_UnionAll<Library>/<workload>/<n>: the union of many overlapping polygons in one call:
 // mkbool's union_all (one arrangement, exact), GEOS's GEOSUnaryUnion_r (floating
-// precision) and Clipper 6.4 (all paths in one Execute, nonzero). Issue 13's speed bars.
+// precision) and Clipper 6.4 (all paths in one Execute, nonzero). BM_SelfCrossing<Library>/
+// <rule>/<n>: a random star-shaped ring of n vertices whose angles are jittered by up to
+// three steps (so that it crosses itself a few times per vertex), intersected with itself by a fill rule, mkbool against Clipper. Issue 13's speed bars.
 // Workloads: `circles`, n random 32-gons of radius 0.5-2 in a 100 x 100 square (seed 1);
 // `grid`, a k x k grid of unit squares sharing every edge (n = k^2), the coverage case.
 // [BRIEF §6] paper-notes.md deviation 16
@@ -114,7 +116,65 @@ void BM_UnionAllClipper(benchmark::State& state, const std::string& name) {
 }
 #endif
 
+Polygon random_self_crossing(int n) {
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> jitter(-3, 3), radius(50, 100);
+  Polygon p;
+  p.rings.emplace_back();
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * M_PI * (i + jitter(rng)) / n;
+    const double r = radius(rng);
+    p.rings[0].push_back({r * std::cos(t), r * std::sin(t)});
+  }
+  return p;
+}
+
+void BM_SelfCrossingMkbool(benchmark::State& state, FillRule rule) {
+  const Polygon a = random_self_crossing(static_cast<int>(state.range(0)));
+  BooleanOptions o;
+  o.op = Operation::intersection;
+  o.fill_rule = rule;
+  o.area = false;
+  std::size_t out = 0;
+  for (auto _ : state) {
+    const BooleanOutput r = compute(a, a, o);
+    out = r.stats.vertices_out;
+    benchmark::DoNotOptimize(out);
+  }
+  state.counters["vertices_out"] = static_cast<double>(out);
+}
+
+#ifdef MK_HAVE_CLIPPER
+void BM_SelfCrossingClipper(benchmark::State& state, FillRule rule) {
+  const Polygon a = random_self_crossing(static_cast<int>(state.range(0)));
+  const double scale = std::ldexp(1.0, 22);  // |coordinates| below 128
+  ClipperLib::Path path;
+  for (const Point& q : a.rings[0]) path.emplace_back(std::llround(q.x * scale), std::llround(q.y * scale));
+  const auto type = rule == FillRule::evenodd ? ClipperLib::pftEvenOdd : ClipperLib::pftNonZero;
+  std::size_t out = 0;
+  for (auto _ : state) {
+    ClipperLib::Clipper c;
+    c.AddPath(path, ClipperLib::ptSubject, true);
+    c.AddPath(path, ClipperLib::ptClip, true);
+    ClipperLib::Paths solution;
+    c.Execute(ClipperLib::ctIntersection, solution, type, type);
+    out = 0;
+    for (const auto& s : solution) out += s.size();
+  }
+  state.counters["vertices_out"] = static_cast<double>(out);
+}
+#endif
+
 void register_all() {
+  for (const FillRule rule : {FillRule::evenodd, FillRule::nonzero}) {
+    const std::string r(fill_rule_name(rule));
+    benchmark::RegisterBenchmark(("BM_SelfCrossing<Mkbool>/" + r).c_str(), BM_SelfCrossingMkbool, rule)
+        ->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime();
+#ifdef MK_HAVE_CLIPPER
+    benchmark::RegisterBenchmark(("BM_SelfCrossing<Clipper>/" + r).c_str(), BM_SelfCrossingClipper, rule)
+        ->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
+  }
   for (const std::string w : {"circles", "grid"}) {
     const std::vector<long> sizes = w == "circles" ? std::vector<long>{1000, 10000} : std::vector<long>{10000};
     for (const long n : sizes) {
