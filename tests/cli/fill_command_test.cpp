@@ -46,6 +46,26 @@ TEST(cliFill, PartsFormsReadFilesOfOneWktPerLineAndGeoJson) {
   EXPECT_NE(g.err.find("\"area_exact\":\"4\""), std::string::npos) << describe(g);  // one square, twice
 }
 
+TEST(cliFill, BatchLinesMayNameAFillRule) {
+  const std::string lines =
+      R"x({"id":1,"op":"union","a_wkt":"POLYGON((0 0,2 2,2 0,0 2,0 0))","b_wkt":"POLYGON EMPTY","fill_rule":"positive"})x"
+      "\n"
+      R"x({"id":2,"op":"union","a_wkt":"POLYGON((0 0,2 2,2 0,0 2,0 0))","b_wkt":"POLYGON EMPTY"})x"
+      "\n"
+      R"x({"id":3,"op":"union","a_wkt":"POLYGON((0 0,2 2,2 0,0 2,0 0))","b_wkt":"POLYGON EMPTY","fill_rule":"odd"})x"
+      "\n";
+  const ProcessResult r = run_mkbool({"batch", "-"}, lines);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto first = r.out.find("\"id\":1");
+  const auto second = r.out.find("\"id\":2");
+  const auto third = r.out.find("\"id\":3");
+  ASSERT_TRUE(first != std::string::npos && second != std::string::npos && third != std::string::npos) << r.out;
+  const std::string one = r.out.substr(first, second - first);
+  EXPECT_NE(one.find("\"area_exact\":\"1\""), std::string::npos) << one;  // the left triangle
+  EXPECT_NE(r.out.substr(second, third - second).find("crosses"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.substr(third).find("unknown fill_rule 'odd'"), std::string::npos) << r.out;
+}
+
 TEST(cliFill, BadArgumentsAndInputGetClearErrors) {
   const ProcessResult rule = run_mkbool({"make-valid", kBowtie, "--fill-rule", "odd"});
   EXPECT_EQ(rule.exit_code, 2) << describe(rule);
