@@ -125,6 +125,23 @@ TEST(FillRules, RingsTracedTwiceAndRepeatingAVertex) {
   }
 }
 
+// Three edges through one crossing point: the bowtie's diagonals cross at (1 1), where the
+// vertical edge of the triangle T = (1 -1, 1 3, -1 1) (counterclockwise, area 4) passes
+// too; the bowtie's left triangle (area 1, winding +1) lies in T with two corners on T's
+// edges, its right triangle (area 1, winding -1) outside. Windings: 2 in the left triangle,
+// 1 in the rest of T, -1 in the right triangle.
+TEST(FillRules, ThreeEdgesThroughOneCrossing) {
+  const MultiPolygon rings{{{{0, 0}, {2, 2}, {2, 0}, {0, 2}}, {}}, {{{1, -1}, {1, 3}, {-1, 1}}, {}}};
+  for (const auto& k : exact_kernels()) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(area_of(make_valid(rings, with(FillRule::nonzero, k))), 5);
+    EXPECT_EQ(area_of(make_valid(rings, with(FillRule::evenodd, k))), 3 + 1);
+    EXPECT_EQ(area_of(make_valid(rings, with(FillRule::positive, k))), 4);
+    EXPECT_EQ(area_of(make_valid(rings, with(FillRule::negative, k))), 1);
+    EXPECT_EQ(make_valid(rings, with(FillRule::nonzero, k)).stats.crossings, 1u);  // one point, found thrice
+  }
+}
+
 // A shell given clockwise and its hole counterclockwise: the union rule turns both, so the
 // hole is cut out; positive (rings as given) keeps only the hole.
 TEST(FillRules, UnionRuleOrientsShellsAndHolesAsOgcReadsThem) {
