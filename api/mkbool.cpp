@@ -12,17 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "arithmetic/kernels/double_kernel.hpp"
-#include "arithmetic/kernels/exact_kernel.hpp"
-#include "arithmetic/kernels/filtered_kernels.hpp"
-#include "arithmetic/kernels/rational_kernel.hpp"
-#include "arithmetic/kernels/rational_mp_kernels.hpp"
-#ifdef MK_WITH_CGAL
-#include "arithmetic/kernels/cgal_kernel.hpp"
-#endif
-#include "core/boolean_op.hpp"
-#include "core/to_output.hpp"
-#include "api/area.hpp"
+#include "api/kernel_dispatch.hpp"
 
 namespace mk {
 
@@ -68,28 +58,7 @@ BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
     throw CrossingEdges(e.polygon(), e.first(), e.second(), crossing_message(e, e.polygon() == 0 ? a : b));
   }
   const auto t1 = std::chrono::steady_clock::now();
-  BooleanOutput out;
-  out.output = to_output<K, ExactKernel>(r, o.exact_coordinates);
-  out.stats.kernel = std::string(K::name);
-  out.stats.op_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count();
-  out.stats.vertices_in = r.stats.vertices_in;
-  out.stats.crossings = r.stats.crossings;
-  out.stats.vertices_out = r.stats.vertices_out;
-  if (!r.unbounded) {
-    if constexpr (K::is_exact) {
-      if (o.area_exact) {
-        const mpq_class exact = *exact_area(r);
-        out.stats.area_exact = exact.get_str();
-        out.stats.area = nearest_double(exact);
-      }
-    }
-    if (o.area && !out.stats.area) out.stats.area = rounded_area(r);
-    if (out.stats.area) {
-      *out.stats.area += 0.0;  // never -0
-      out.stats.area_beyond_double = std::isinf(*out.stats.area);
-    }
-  }
-  return out;
+  return api_detail::boolean_output(r, o, std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count());
 }
 
 }  // namespace
@@ -115,20 +84,8 @@ bool is_number_type_variant(std::string_view name) {
 }
 
 BooleanOutput compute(const Polygon& a, const Polygon& b, const BooleanOptions& options) {
-  const std::string_view name = options.kernel.empty() ? default_kernel() : std::string_view(options.kernel);
-  if (name == ExactKernel::name) return run<ExactKernel>(a, b, options);
-  if (name == RationalKernel::name) return run<RationalKernel>(a, b, options);
-  if (name == RationalMpKernel::name) return run<RationalMpKernel>(a, b, options);
-  if (name == RationalCppKernel::name) return run<RationalCppKernel>(a, b, options);
-  if (name == AdaptiveKernel::name) return run<AdaptiveKernel>(a, b, options);
-  if (name == IntervalKernel::name) return run<IntervalKernel>(a, b, options);
-#ifdef MK_WITH_CGAL
-  if (name == CgalKernel::name) return run<CgalKernel>(a, b, options);
-#endif
-  if (name == DoubleKernel::name) return run<DoubleKernel>(a, b, options);
-  std::string known;
-  for (const auto k : kernel_names()) known += (known.empty() ? "" : ", ") + std::string(k);
-  throw std::invalid_argument("unknown kernel '" + std::string(name) + "' (built: " + known + ")");
+  if (options.fill_rule) return api_detail::compute_with_fill_rule(a, b, options);
+  return api_detail::with_kernel(options.kernel, [&]<class K>(std::type_identity<K>) { return run<K>(a, b, options); });
 }
 
 }  // namespace mk

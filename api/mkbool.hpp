@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/fill_rule.hpp"
 #include "core/output.hpp"
 #include "core/polygon.hpp"
 
@@ -37,6 +38,11 @@ struct BooleanOptions {
                             // operation on results with many crossing points
   // Output::irreducible[i].exact: the exact coordinates as "p/q" strings (exact kernels).
   bool exact_coordinates = false;
+  // A fill rule reads each input's rings in the directions given, crossing themselves and
+  // each other freely: its region is the closure of the points whose winding number the rule
+  // accepts (Clipper's meanings). Regular output only. Unset: the paper's domain (rings may
+  // touch, never cross; regions by nesting), exactly as without this option.
+  std::optional<FillRule> fill_rule = std::nullopt;
 };
 
 struct BooleanStats {
@@ -60,7 +66,28 @@ struct BooleanOutput {
   BooleanStats stats;
 };
 
-// Throws std::invalid_argument for an unknown kernel name.
+// Throws std::invalid_argument for an unknown kernel name. With options.fill_rule, the rings
+// of A and B are read by the rule in their given directions (FillRule::union_ reads them as
+// nonzero: see fill_rule_polygon) and options.regular must be true.
 BooleanOutput compute(const Polygon& a, const Polygon& b, const BooleanOptions& options);
+
+// The rings of an OGC multipolygon as a fill rule reads them: as given, or, for
+// FillRule::union_, each shell turned counterclockwise and each hole clockwise (by the exact
+// sign of its signed area; a ring of zero signed area is left as given), so that the nonzero
+// rule gives the union of the parts, each its shell less its holes.
+Polygon fill_rule_polygon(const MultiPolygon& mp, FillRule rule);
+
+// N-ary operations on the parts of a multipolygon (a MULTIPOLYGON, a GeoJSON FeatureCollection,
+// a file of one polygon per line), as one arrangement of all rings. Regular output only;
+// options.op and options.regular are not read.
+// union_all: the closure of the points whose winding number over all rings together (after
+//   fill_rule_polygon) the rule accepts; default rule union_, which gives the union of the
+//   parts. Other rules read all rings at once, as Clipper's union of all paths does.
+// intersection_all: the points in every part's region, each part read by the rule on its own
+//   (default union_); costs one winding number per part and link of the arrangement.
+// make_valid: the region of all rings by the rule (default evenodd), as a valid polygon.
+BooleanOutput union_all(const MultiPolygon& parts, const BooleanOptions& options);
+BooleanOutput intersection_all(const MultiPolygon& parts, const BooleanOptions& options);
+BooleanOutput make_valid(const MultiPolygon& input, const BooleanOptions& options);
 
 }  // namespace mk

@@ -117,10 +117,29 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
   if (!op) {
     throw CaseError{"unknown op '" + op_name + "' (expected intersection, union, difference, symdifference or xor)"};
   }
-  const Polygon a = read_case_polygon(member_string(line, "a_wkt"), "a_wkt");
-  const Polygon b = read_case_polygon(member_string(line, "b_wkt"), "b_wkt");
+  // "fill_rule": the inputs are any rings, read by the rule (io/format.hpp, unchecked).
+  std::optional<FillRule> rule;
+  if (line.contains("fill_rule")) {
+    const std::string name = member_string(line, "fill_rule");
+    for (const FillRule r : {FillRule::evenodd, FillRule::nonzero, FillRule::positive, FillRule::negative, FillRule::union_}) {
+      if (name == fill_rule_name(r)) rule = r;
+    }
+    if (!rule) throw CaseError{"unknown fill_rule '" + name + "' (expected evenodd, nonzero, positive, negative or union)"};
+    if (!options.regular) throw CaseError{"a fill rule gives regular results only (the batch runs --non-regular)"};
+  }
+  const auto read = [&](const char* key) {
+    if (!rule) return read_case_polygon(member_string(line, key), key);
+    try {
+      return fill_rule_polygon(read_wkt(member_string(line, key)), *rule);
+    } catch (const InvalidInput& e) {
+      throw CaseError{std::string(key) + ": " + e.what()};
+    }
+  };
+  const Polygon a = read("a_wkt");
+  const Polygon b = read("b_wkt");
 
   BooleanOptions o;
+  o.fill_rule = rule;
   o.op = *op;
   o.regular = options.regular;
   o.kernel = options.kernel;

@@ -19,7 +19,9 @@ struct BatchOptions {
 
 // Each non-blank input line is an object with "id" (any JSON value, echoed), "op"
 // (intersection, union, difference, symdifference or xor), "a_wkt" and "b_wkt"; other
-// members are ignored, except "area_exact": false, which leaves that line's exact area out.
+// members are ignored, except "area_exact": false, which leaves that line's exact area out,
+// and "fill_rule" (evenodd, nonzero, positive, negative or union), which reads a_wkt and
+// b_wkt as any rings by that rule (regular batches only).
 // Each gives one output line, in input order: id, op, kernel, result_wkt, area (null beyond
 // the largest double), area_beyond_double, area_exact, valid, op_ns, line (1-based input
 // line), and error when the

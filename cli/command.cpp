@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <tuple>
 
 #include "api/mkbool.hpp"
 #include "cli/exit_codes.hpp"
@@ -32,18 +33,17 @@ std::string with_final_newline(std::string text) {
 // The result's text in the requested format. An unbounded result has no WKT or GeoJSON
 // form (both describe finite areas), so it is refused with the way out rather than cut down
 // to its bounded part.
-std::string format_output(const CommandOptions& o, const Polygon& a, const Polygon& b, const BooleanOutput& r) {
-  switch (o.format) {
+std::string format_output(OutputFormat format, const std::string& what, const Polygon& a, const Polygon& b,
+                          const BooleanOutput& r) {
+  switch (format) {
     case OutputFormat::wkt:
     case OutputFormat::geojson:
       if (r.output.unbounded) {
-        throw OutputError(std::string("the result of ") + std::string(operation_name(o.op)) + " of A (" +
-                          type_name(a.type) + ") and B (" + type_name(b.type) +
-                          ") is unbounded (hole type), which " +
-                          (o.format == OutputFormat::wkt ? "WKT" : "GeoJSON") +
+        throw OutputError("the result of " + what + " is unbounded (hole type), which " +
+                          (format == OutputFormat::wkt ? "WKT" : "GeoJSON") +
                           " cannot express; use --format json (or svg)");
       }
-      return with_final_newline(o.format == OutputFormat::wkt ? write_wkt(r.output) : write_geojson(r.output));
+      return with_final_newline(format == OutputFormat::wkt ? write_wkt(r.output) : write_geojson(r.output));
     case OutputFormat::native_json:
       return with_final_newline(write_native_json(r.output, r.stats.kernel));
     case OutputFormat::svg:
@@ -52,12 +52,35 @@ std::string format_output(const CommandOptions& o, const Polygon& a, const Polyg
   return {};
 }
 
+// Statistics: one JSON line on standard error.
+// Returns 0, or the errno of a failed write (standard error on a full disk): the caller
+// reports it after the result is written, so asked-for statistics are never lost with exit 0.
+int print_stats(const BooleanOutput& result, const PredicateCounters& counters) {
+  const std::string line = stats_json(result, counters) + "\n";
+  if (std::fputs(line.c_str(), stderr) == EOF || std::fflush(stderr) != 0) return errno != 0 ? errno : EIO;
+  return 0;
+}
+
+void throw_if_stats_lost(int stats_lost) {
+  if (stats_lost) throw OutputError(std::string("cannot write the statistics to standard error: ") + std::strerror(stats_lost));
+}
+
 }  // namespace
 
 void run_command(const CommandOptions& o) {
   if (o.a == "-" && o.b == "-") throw UsageError("A and B cannot both be standard input ('-')");
-  Input in_a = read_input(o.a, "A");
-  Input in_b = read_input(o.b, "B");
+  Input in_a;
+  Input in_b;
+  if (o.fill_rule) {  // any rings: read as parts, unchecked
+    for (auto [in, arg, role] : {std::tuple{&in_a, &o.a, "A"}, std::tuple{&in_b, &o.b, "B"}}) {
+      PartsInput parts = read_parts(*arg, role);
+      in->polygon = fill_rule_polygon(parts.parts, *o.fill_rule);
+      in->name = std::move(parts.name);
+    }
+  } else {
+    in_a = read_input(o.a, "A");
+    in_b = read_input(o.b, "B");
+  }
   Polygon& a = in_a.polygon;
   Polygon& b = in_b.polygon;
   if (o.a_type) a.type = *o.a_type;
@@ -70,6 +93,7 @@ void run_command(const CommandOptions& o) {
   options.area = o.stats;  // the area is only reported in --stats
   options.area_exact = o.stats;
   options.exact_coordinates = o.format == OutputFormat::native_json;  // only the native format writes them
+  options.fill_rule = o.fill_rule;
   PredicateCounters::reset();
   BooleanOutput result;
   try {
@@ -84,18 +108,46 @@ void run_command(const CommandOptions& o) {
 
   // Statistics first: they describe the operation, which succeeded even when its result
   // cannot be written in the requested format.
-  // A failed write of them (standard error on a full disk) is an error, reported after the
-  // result is written: asked-for statistics are never lost with exit 0.
-  int stats_lost = 0;  // errno of the failed write
-  if (o.stats) {
-    const std::string line = stats_json(result, counters) + "\n";
-    if (std::fputs(line.c_str(), stderr) == EOF || std::fflush(stderr) != 0) stats_lost = errno != 0 ? errno : EIO;
-  }
-  const std::string text = format_output(o, a, b, result);
+  // A failed write of them is an error, reported after the result is written.
+  const int stats_lost = o.stats ? print_stats(result, counters) : 0;
+  const std::string what =
+      std::string(operation_name(o.op)) + " of A (" + type_name(a.type) + ") and B (" + type_name(b.type) + ")";
   OutputFile out(o.output);
-  out.write(text);
+  out.write(format_output(o.format, what, a, b, result));
   out.commit();
-  if (stats_lost) throw OutputError(std::string("cannot write the statistics to standard error: ") + std::strerror(stats_lost));
+  throw_if_stats_lost(stats_lost);
+}
+
+void run_parts_command(const PartsCommandOptions& o) {
+  const PartsInput in = read_parts(o.input, "INPUT");
+  BooleanOptions options;
+  options.kernel = o.kernel;
+  options.area = o.stats;
+  options.area_exact = o.stats;
+  options.exact_coordinates = o.format == OutputFormat::native_json;
+  options.fill_rule = o.fill_rule;
+  PredicateCounters::reset();
+  BooleanOutput result;
+  const char* what = "union-all";
+  switch (o.op) {
+    case PartsOperation::union_all: result = union_all(in.parts, options); break;
+    case PartsOperation::intersection_all:
+      what = "intersection-all";
+      if (in.parts.empty()) throw InvalidInput(in.name + ": intersection-all needs at least one polygon");
+      result = intersection_all(in.parts, options);
+      break;
+    case PartsOperation::make_valid:
+      what = "make-valid";
+      result = make_valid(in.parts, options);
+      break;
+  }
+  const PredicateCounters counters = PredicateCounters::read();
+  const int stats_lost = o.stats ? print_stats(result, counters) : 0;
+  const Polygon drawn = fill_rule_polygon(in.parts, o.fill_rule.value_or(FillRule::evenodd));
+  OutputFile out(o.output);
+  out.write(format_output(o.format, what, drawn, Polygon{}, result));
+  out.commit();
+  throw_if_stats_lost(stats_lost);
 }
 
 }  // namespace mk::cli

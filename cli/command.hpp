@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/fill_rule.hpp"
 #include "core/polygon.hpp"
 
 namespace mk::cli {
@@ -24,11 +25,28 @@ struct CommandOptions {
   OutputFormat format = OutputFormat::wkt;
   std::string output;  // empty: standard output
   bool stats = false;
+  // Reads A and B by a fill rule (any rings: crossing, overlapping); regular output only.
+  std::optional<FillRule> fill_rule;
 };
 
 // Runs the operation and writes its output. Throws mk::cli::UsageError (two standard
 // inputs), mk::InvalidInput (bad input, named), mk::KernelFailure, mk::cli::OutputError
 // (unbounded result as WKT or GeoJSON; unwritable output).
 void run_command(const CommandOptions& options);
+
+// The operations on the parts of one input (api: union_all, intersection_all, make_valid).
+enum class PartsOperation { union_all, intersection_all, make_valid };
+
+struct PartsCommandOptions {
+  PartsOperation op = PartsOperation::union_all;
+  std::string input;  // file, `-` or inline text
+  std::string kernel;
+  std::optional<FillRule> fill_rule;  // empty: the operation's default (union, or evenodd)
+  OutputFormat format = OutputFormat::wkt;
+  std::string output;
+  bool stats = false;
+};
+
+void run_parts_command(const PartsCommandOptions& options);
 
 }  // namespace mk::cli

@@ -80,46 +80,77 @@ std::string read_standard_input() {
   return text;
 }
 
-Input read_input(const std::string& argument, std::string_view role) {
-  const std::string who(role);
+namespace {
+
+// The text of one argument and how messages name its source; `hint` is the file name that
+// helps choose the format (empty: sniff the content).
+struct Loaded {
   std::string text;
-  std::string where;      // the source, as messages name it
-  std::string hint;       // file name for the format choice; empty means sniff the content
+  std::string where;
+  std::string hint;
+};
+
+Loaded load_argument(const std::string& argument, const std::string& who) {
+  Loaded l;
   switch (classify_input(argument)) {
     case InputSource::standard_input:
       try {
-        text = read_text_stream(stdin, "standard input");  // stops at a NUL byte (< /dev/zero)
+        l.text = read_text_stream(stdin, "standard input");  // stops at a NUL byte (< /dev/zero)
       } catch (const InvalidInput& e) {
         throw InvalidInput(who + ": " + e.what());
       }
-      where = "standard input";
+      l.where = "standard input";
       break;
     case InputSource::file:
       try {
-        text = read_text_file(argument);  // stops at a NUL byte: /dev/zero is refused at once
+        l.text = read_text_file(argument);  // stops at a NUL byte: /dev/zero is refused at once
       } catch (const InvalidInput& e) {
         throw InvalidInput(who + ": " + e.what());  // the message already names the path
       }
-      where = "file '" + argument + "'";
-      hint = argument;
+      l.where = "file '" + argument + "'";
+      l.hint = argument;
       break;
     case InputSource::inline_text:
-      text = argument;
-      where = looks_like_json(argument) ? "inline JSON" : "inline WKT";
+      l.text = argument;
+      l.where = looks_like_json(argument) ? "inline JSON" : "inline WKT";
       break;
   }
-  if (is_blank(text)) {
+  if (is_blank(l.text)) {
     // empty_input_message quotes a path; standard input has none.
     const std::string message = empty_input_message(argument);
     throw InvalidInput(who + ": " + (argument == "-" ? "standard input" + message.substr(message.find(" is empty"))
                                                        : message));
   }
+  return l;
+}
+
+}  // namespace
+
+Input read_input(const std::string& argument, std::string_view role) {
+  const std::string who(role);
+  const Loaded l = load_argument(argument, who);
+  const std::string& text = l.text;
+  const std::string& where = l.where;
+  const std::string& hint = l.hint;
   Input in;
   in.name = who + " (" + where + ")";
   try {
     PolygonInput read = read_polygon_input(text, hint);
     in.polygon = std::move(read.polygon);
     in.ring_names = std::move(read.ring_names);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(in.name + ": " + e.what());
+  }
+  return in;
+}
+
+PartsInput read_parts(const std::string& argument, std::string_view role) {
+  const std::string who(role);
+  const Loaded l = load_argument(argument, who);
+  PartsInput in;
+  in.name = who + " (" + l.where + ")";
+  try {
+    in.parts = read_parts_input(l.text, l.hint);
   } catch (const InvalidInput& e) {
     throw InvalidInput(in.name + ": " + e.what());
   }

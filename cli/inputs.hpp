@@ -31,6 +31,14 @@ struct Input {
 // polygon is written POLYGON EMPTY). Throws mk::InvalidInput.
 Input read_input(const std::string& argument, std::string_view role);
 
+// One argument read as parts, unchecked (io/format.hpp, read_parts_input): for fill rules,
+// union-all, intersection-all and make-valid. Errors as for read_input.
+struct PartsInput {
+  MultiPolygon parts;
+  std::string name;
+};
+PartsInput read_parts(const std::string& argument, std::string_view role);
+
 // The whole of standard input, in binary.
 std::string read_standard_input();
 

@@ -22,6 +22,9 @@ namespace {
 constexpr const char* usage_lines =
     "usage: mkbool OP A B [--kernel K] [--non-regular] [--a-type island|hole] [--b-type island|hole]\n"
     "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats]\n"
+    "                     [--fill-rule evenodd|nonzero|positive|negative|union]\n"
+    "       mkbool union-all|intersection-all|make-valid INPUT [--fill-rule R] [--kernel K]\n"
+    "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats]\n"
     "       mkbool batch FILE.jsonl [--kernel K] [--non-regular] [-o FILE]\n"
     "       mkbool --help | --version\n";
 
@@ -65,6 +68,63 @@ int parse_error(const CLI::App& app, const CLI::ParseError& e) {
   if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
   std::fprintf(stderr, "mkbool: error: %s (see mkbool --help)\n", e.what());
   return static_cast<int>(ExitCode::usage);
+}
+
+const std::map<std::string, FillRule>& fill_rules() {
+  static const std::map<std::string, FillRule> rules{{"evenodd", FillRule::evenodd},
+                                                     {"nonzero", FillRule::nonzero},
+                                                     {"positive", FillRule::positive},
+                                                     {"negative", FillRule::negative},
+                                                     {"union", FillRule::union_}};
+  return rules;
+}
+
+const std::map<std::string, OutputFormat>& output_formats() {
+  static const std::map<std::string, OutputFormat> formats{{"wkt", OutputFormat::wkt},
+                                                           {"geojson", OutputFormat::geojson},
+                                                           {"json", OutputFormat::native_json},
+                                                           {"svg", OutputFormat::svg}};
+  return formats;
+}
+
+constexpr const char* fill_rule_help =
+    "read the input's rings in their given directions, crossing freely, by their winding numbers: evenodd "
+    "(odd), nonzero, positive, negative, or union (every shell counterclockwise and every hole clockwise, "
+    "then nonzero: the union of the parts)";
+
+// mkbool union-all | intersection-all | make-valid INPUT: the parts of one input in one
+// arrangement.
+int run_parts_form(int argc, char** argv) {
+  const std::string verb = argv[1];
+  const std::map<std::string, PartsOperation> verbs{{"union-all", PartsOperation::union_all},
+                                                    {"intersection-all", PartsOperation::intersection_all},
+                                                    {"make-valid", PartsOperation::make_valid}};
+  CLI::App app(verb == "make-valid"
+                   ? "The valid polygon of the input's region under a fill rule (default evenodd).\n"
+                   : "The " + std::string(verb == "union-all" ? "union" : "intersection") +
+                         " of every polygon of the input (MULTIPOLYGON, GEOMETRYCOLLECTION, GeoJSON\n"
+                         "FeatureCollection, or a file of one WKT per line), in one arrangement of all rings.\n",
+               "mkbool " + verb);
+  PartsCommandOptions o;
+  o.op = verbs.at(verb);
+  std::string rule;
+  std::string format = "wkt";
+  app.add_option("INPUT", o.input, "file, '-' or inline WKT")->required();
+  app.add_option("--fill-rule", rule, fill_rule_help)->check(CLI::IsMember(fill_rules()));
+  app.add_option("--kernel", o.kernel, kernel_help())->check(kernel_validator());
+  app.add_option("--format", format, "output format: wkt (default), geojson, json (native, exact) or svg")
+      ->check(CLI::IsMember(output_formats()));
+  app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
+  app.add_flag("--stats", o.stats, "print one JSON line of statistics on standard error");
+  try {
+    app.parse(argc - 1, argv + 1);
+  } catch (const CLI::ParseError& e) {
+    return parse_error(app, e);
+  }
+  if (!rule.empty()) o.fill_rule = fill_rules().at(rule);
+  o.format = output_formats().at(format);
+  run_parts_command(o);
+  return static_cast<int>(ExitCode::success);
 }
 
 int run_batch_form(int argc, char** argv) {
@@ -112,10 +172,8 @@ int run_command_form(int argc, char** argv) {
                                              {"difference", Operation::difference},
                                              {"xor", Operation::symmetric_difference},
                                              {"symdifference", Operation::symmetric_difference}};
-  const std::map<std::string, OutputFormat> formats{{"wkt", OutputFormat::wkt},
-                                                    {"geojson", OutputFormat::geojson},
-                                                    {"json", OutputFormat::native_json},
-                                                    {"svg", OutputFormat::svg}};
+  const std::map<std::string, OutputFormat>& formats = output_formats();
+  std::string rule;
   const std::map<std::string, PolygonType> types{{"island", PolygonType::island}, {"hole", PolygonType::hole}};
 
   app.add_option("OP", op, "intersection, union, difference (A minus B) or xor (also: symdifference)")
@@ -133,6 +191,7 @@ int run_command_form(int argc, char** argv) {
       ->check(CLI::IsMember(formats));
   app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
   app.add_flag("--stats", o.stats, "print one JSON line of statistics on standard error");
+  app.add_option("--fill-rule", rule, fill_rule_help)->check(CLI::IsMember(fill_rules()))->excludes("--non-regular");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -143,6 +202,7 @@ int run_command_form(int argc, char** argv) {
   if (!a_type.empty()) o.a_type = types.at(a_type);
   if (!b_type.empty()) o.b_type = types.at(b_type);
   o.format = formats.at(format);
+  if (!rule.empty()) o.fill_rule = fill_rules().at(rule);
   run_command(o);
   return static_cast<int>(ExitCode::success);
 }
@@ -150,6 +210,9 @@ int run_command_form(int argc, char** argv) {
 int run(int argc, char** argv) {
   try {
     if (argc > 1 && std::strcmp(argv[1], "batch") == 0) return run_batch_form(argc, argv);
+    for (const char* verb : {"union-all", "intersection-all", "make-valid"}) {
+      if (argc > 1 && std::strcmp(argv[1], verb) == 0) return run_parts_form(argc, argv);
+    }
     return run_command_form(argc, argv);
   } catch (const UsageError& e) {
     return fail(ExitCode::usage, e.what());

@@ -4,6 +4,10 @@
 #include "io/format.hpp"
 
 #include <string>
+#include <utility>
+#include <vector>
+
+#include "core/error.hpp"
 
 #include "io/geojson.hpp"
 #include "io/native_json.hpp"
@@ -67,6 +71,44 @@ bool top_object_has_rings(std::string_view text) {
   return false;
 }
 
+// Whether the line starts a WKT geometry: letters, then `(` or the word EMPTY (after a
+// dimension tag, if any).
+bool starts_wkt_geometry(std::string_view line) {
+  line = skip_leading_space(line);
+  std::size_t n = 0;
+  const auto is_letter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); };
+  while (n < line.size() && is_letter(line[n])) ++n;
+  if (n == 0) return false;
+  line = skip_leading_space(line.substr(n));
+  for (const std::string_view tag : {"ZM", "Z", "M", "zm", "z", "m"}) {
+    if (line.starts_with(tag) && line.size() > tag.size() && !is_letter(line[tag.size()])) {
+      line = skip_leading_space(line.substr(tag.size()));
+      break;
+    }
+  }
+  return line.starts_with('(') || line.starts_with("EMPTY") || line.starts_with("empty") || line.starts_with("Empty");
+}
+
+// The non-blank lines of a text with their 1-based numbers, when there are two or more and
+// each starts a WKT geometry; else nothing.
+std::vector<std::pair<std::size_t, std::string_view>> wkt_lines(std::string_view text) {
+  std::vector<std::pair<std::size_t, std::string_view>> lines;
+  std::size_t number = 0;
+  while (!text.empty()) {
+    const std::size_t end = text.find('\n');
+    const std::string_view line = text.substr(0, end);
+    ++number;
+    if (!skip_leading_space(line).empty()) {
+      if (!starts_wkt_geometry(line)) return {};
+      lines.emplace_back(number, line);
+    }
+    if (end == std::string_view::npos) break;
+    text.remove_prefix(end + 1);
+  }
+  if (lines.size() < 2) return {};
+  return lines;
+}
+
 }  // namespace
 
 std::string_view format_name(Format format) {
@@ -107,6 +149,29 @@ PolygonInput read_polygon_input(std::string_view text, std::string_view filename
     for (std::size_t k = 0; k <= mp[p].holes.size(); ++k) in.ring_names.push_back(ring_name(names, p, k));
   }
   return in;
+}
+
+MultiPolygon read_parts_input(std::string_view text, std::string_view filename_hint) {
+  switch (sniff_format(text, filename_hint)) {
+    case Format::native_json:
+      throw InvalidInput("native JSON has no parts (shells and holes); give WKT or GeoJSON");
+    case Format::geojson:
+      return read_geojson(text);
+    case Format::wkt:
+      break;
+  }
+  const auto lines = wkt_lines(text);
+  if (lines.empty()) return read_wkt(text);
+  MultiPolygon parts;
+  for (const auto& [number, line] : lines) {
+    try {
+      MultiPolygon mp = read_wkt(line);
+      for (auto& p : mp) parts.push_back(std::move(p));
+    } catch (const InvalidInput& e) {
+      throw InvalidInput("line " + std::to_string(number) + ": " + e.what());
+    }
+  }
+  return parts;
 }
 
 Polygon read_polygon(std::string_view text, std::string_view filename_hint) {

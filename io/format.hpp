@@ -36,6 +36,13 @@ struct PolygonInput {
 // gives what OGC means (io/parts.hpp: the union of the parts, each its shell less its holes).
 PolygonInput read_polygon_input(std::string_view text, std::string_view filename_hint);
 
+// The parts of a WKT or GeoJSON input, not checked against each other or themselves: what
+// fill rules, union-all, intersection-all and make-valid read (any rings: crossing,
+// overlapping, repeating vertices). A WKT text of two or more lines each of which starts a
+// geometry (a keyword, then `(` or EMPTY) is read as one geometry per line, its parts in
+// line order; errors then start with "line L: ". Native JSON, which has no parts, is refused.
+MultiPolygon read_parts_input(std::string_view text, std::string_view filename_hint);
+
 // The polygon alone.
 Polygon read_polygon(std::string_view text, std::string_view filename_hint);
 

@@ -1,0 +1,180 @@
+// Boolean operations of regions given by fill rules, and N-ary unions and intersections: the
+// paper's classification generalised from inside/outside to winding numbers. Every link of
+// the winding arrangement gets the winding number of every input on both its sides, by
+// walking around each vertex in angular order from one link located by a ray per connected
+// part; a link bounds the result where the result's predicate differs across it, and the
+// result cycles are traced by step 6.
+// [MK89 §3.1 steps 4-6] [MK89 §4.3] (locate one point, then walk, updating at boundaries)
+// [MK89 Table 5] (angles at a vertex) paper-notes.md, deviation "winding numbers"
+// Preconditions: `wa` from build_winding_arrangement; in_result(const int* w) reads one
+// winding number per group and says whether that face is in the result.
+#pragma once
+
+#include <algorithm>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/boolean_op.hpp"
+#include "core/edge_fragment_table.hpp"
+#include "core/error.hpp"
+#include "core/locator.hpp"
+#include "core/step6_construct.hpp"
+#include "core/winding_arrangement.hpp"
+#include "predicates/directions.hpp"
+#include "predicates/ray.hpp"
+
+namespace mk {
+
+// The winding numbers of every group just left of every link (left of lo -> hi), flattened
+// link after link. Exact with exact kernels; KernelFailure when inexact predicates make the
+// counts around a vertex disagree.
+template <Kernel K>
+std::vector<int> link_windings(const WindingArrangement<K>& wa) {
+  const Arrangement<K>& arr = wa.arr;
+  const int G = wa.groups;
+  const int num_links = static_cast<int>(wa.links.size());
+  // Counted apart, the groups cost a winding number each per link: refused past 2^27 numbers
+  // (512 MB) rather than exhausting memory.
+  if (static_cast<double>(num_links) * G > static_cast<double>(1 << 27)) {
+    throw InvalidInput(std::to_string(G) + " inputs counted apart on " + std::to_string(num_links) +
+                       " links would need more than 2^27 winding numbers; give fewer inputs (intersection-all keeps one "
+                       "per part)");
+  }
+  // Link ends grouped by vertex (code 2 l at lo, 2 l + 1 at hi), each group in angular order.
+  std::vector<int> begin(static_cast<std::size_t>(arr.num_vertices()) + 1, 0);
+  for (const WindingLink& l : wa.links) {
+    ++begin[l.lo + 1];
+    ++begin[l.hi + 1];
+  }
+  for (std::size_t v = 1; v < begin.size(); ++v) begin[v] += begin[v - 1];
+  std::vector<int> ends(static_cast<std::size_t>(begin.back()));
+  {
+    std::vector<int> fill(begin.begin(), begin.end() - 1);
+    for (int l = 0; l < num_links; ++l) {
+      ends[fill[wa.links[l].lo]++] = 2 * l;
+      ends[fill[wa.links[l].hi]++] = 2 * l + 1;
+    }
+  }
+  const DirectionOrder<K> angles(arr.points);
+  const auto dir_of = [&](int code) {
+    const Direction d = wa.links[code >> 1].dir;
+    return (code & 1) != 0 ? d.reversed() : d;
+  };
+  for (std::size_t v = 0; v + 1 < begin.size(); ++v) {
+    if (begin[v + 1] - begin[v] < 3) continue;  // two ends: either order is the angular one
+    std::sort(ends.begin() + begin[v], ends.begin() + begin[v + 1],
+              [&](int x, int y) { return angles.compare(dir_of(x), dir_of(y)) == Sign::negative; });
+  }
+
+  std::vector<int> left(static_cast<std::size_t>(num_links) * G, 0);
+  std::vector<char> known(static_cast<std::size_t>(num_links), 0);
+  std::vector<char> done(static_cast<std::size_t>(arr.num_vertices()), 0);
+  const auto delta = [&](int l, int g) { return wa.delta[static_cast<std::size_t>(l) * G + g]; };
+  const auto fail = [&]() {
+    throw KernelFailure(std::string("kernel ") + std::string(K::name) +
+                        ": the winding numbers around a vertex do not close (inconsistent predicates)");
+  };
+  std::vector<int> stack;
+  std::vector<int> sector(static_cast<std::size_t>(G));
+  // Around v counterclockwise: crossing an end counterclockwise goes from the right of its
+  // ray (away from v) to its left, adding the ray's net count; the sector after an end at
+  // lo is its link's left side, after an end at hi its right side.
+  const auto walk_around = [&](int v) {
+    const int b = begin[v];
+    const int n = begin[v + 1] - b;
+    int i0 = 0;
+    while (i0 < n && !known[ends[b + i0] >> 1]) ++i0;
+    const auto after = [&](int code, int g) {
+      const int l = code >> 1;
+      return left[static_cast<std::size_t>(l) * G + g] - ((code & 1) != 0 ? delta(l, g) : 0);
+    };
+    for (int g = 0; g < G; ++g) sector[g] = after(ends[b + i0], g);
+    for (int k = 1; k <= n; ++k) {
+      const int code = ends[b + (i0 + k) % n];
+      const int l = code >> 1;
+      for (int g = 0; g < G; ++g) sector[g] += (code & 1) != 0 ? -delta(l, g) : delta(l, g);
+      if (known[l]) {
+        for (int g = 0; g < G; ++g) {
+          if (after(code, g) != sector[g]) fail();
+        }
+        continue;
+      }
+      for (int g = 0; g < G; ++g) left[static_cast<std::size_t>(l) * G + g] = sector[g] + ((code & 1) != 0 ? delta(l, g) : 0);
+      known[l] = 1;
+      const int other = (code & 1) != 0 ? wa.links[l].lo : wa.links[l].hi;
+      if (!done[other]) stack.push_back(other);
+    }
+  };
+
+  // One located link per connected part: the first fragment of an edge, whose left side is
+  // the point just left of the edge near its source (a ray query over each group's edges).
+  // The first few queries scan the edges; from then on (many separate parts) they are
+  // bucketed.
+  std::vector<std::unique_ptr<WindingLocator<K>>> locators(static_cast<std::size_t>(G));
+  std::vector<char> bucketed(static_cast<std::size_t>(G), 0);
+  constexpr int kDirectSeeds = 4;
+  int seeds = 0;
+  const auto locate = [&](int e, int g) {
+    const bool many = seeds > kDirectSeeds;
+    if (!locators[g] || (many && !bucketed[g])) {
+      const std::span<const Edge> edges(wa.edges.data() + wa.group_first_edge[g],
+                                        static_cast<std::size_t>(wa.group_first_edge[g + 1] - wa.group_first_edge[g]));
+      locators[g] = std::make_unique<WindingLocator<K>>(arr, edges, many ? wa.edges.size() : 1);
+      bucketed[g] = many;
+    }
+    return locators[g]->winding(wa.edges[e].src, wa.edges[e].dst, Side::left);
+  };
+  for (int e = 0; e < static_cast<int>(wa.edges.size()); ++e) {
+    const int l = wa.edge_first_link[e];
+    if (known[l]) continue;
+    ++seeds;
+    for (int g = 0; g < G; ++g) {
+      const bool empty = wa.group_first_edge[g] == wa.group_first_edge[g + 1];
+      const int w = empty ? 0 : locate(e, g);
+      left[static_cast<std::size_t>(l) * G + g] = wa.edge_first_forward[e] ? w : w + delta(l, g);
+    }
+    known[l] = 1;
+    stack.assign({wa.links[l].lo, wa.links[l].hi});
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      if (done[v]) continue;
+      done[v] = 1;
+      walk_around(v);
+    }
+  }
+  return left;
+}
+
+// The regular result of a predicate over the groups' winding numbers: its boundary links,
+// oriented with the result on their left, traced into cycles by step 6.
+template <Kernel K, class InResult>
+BooleanResult<K> fill_op(WindingArrangement<K>&& wa, InResult&& in_result) {
+  const int G = wa.groups;
+  const std::vector<int> left = link_windings(wa);
+  BooleanResult<K> res;
+  Arrangement<K>& arr = res.arrangement;
+  arr = std::move(wa.arr);
+  HashEdgeTable ef(wa.links.size(), arr.num_vertices());
+  std::vector<int> right(static_cast<std::size_t>(G));
+  for (std::size_t l = 0; l < wa.links.size(); ++l) {
+    const int* wl = left.data() + l * G;
+    for (int g = 0; g < G; ++g) right[g] = wl[g] - wa.delta[l * G + g];
+    const bool in_left = in_result(wl);
+    if (in_left == in_result(right.data())) continue;
+    const WindingLink& k = wa.links[l];
+    ef.insert(in_left ? EfEntry{k.lo, k.hi, k.dir, true} : EfEntry{k.hi, k.lo, k.dir.reversed(), true}, true);
+  }
+  // Both (empty) polygons are islands: counterclockwise cycles are islands (Table 4, union).
+  res.cycles = construct_result_cycles(arr, ef, Operation::union_);
+  const std::vector<int> zero(static_cast<std::size_t>(G), 0);
+  res.unbounded = in_result(zero.data());
+  res.stats.vertices_in = arr.points.size();
+  res.stats.crossings = static_cast<std::size_t>(wa.distinct_crossings);
+  for (const auto& c : res.cycles) res.stats.vertices_out += c.vertices.size();
+  return res;
+}
+
+}  // namespace mk

@@ -1,0 +1,207 @@
+// Fill rules, union-all, intersection-all and make-valid on hand-derived cases: a bowtie, a
+// pentagram under evenodd and nonzero, overlapping multipolygon parts, rings traced twice or
+// repeating a vertex, each area derived here from the winding numbers of its faces; and the
+// errors of the options. Every exact kernel must give the derived area exactly; inexact
+// kernels run for the record. [BRIEF §1, extended by issue 13]
+// Preconditions: none.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "api/mkbool.hpp"
+
+namespace mk {
+namespace {
+
+std::vector<std::string> exact_kernels() {
+  std::vector<std::string> out;
+  for (const auto k : kernel_names()) {
+    if (is_exact_kernel(k)) out.emplace_back(k);
+  }
+  return out;
+}
+
+BooleanOptions with(FillRule rule, const std::string& kernel, Operation op = Operation::union_) {
+  BooleanOptions o;
+  o.op = op;
+  o.kernel = kernel;
+  o.fill_rule = rule;
+  o.area_exact = true;
+  return o;
+}
+
+mpq_class area_of(const BooleanOutput& r) { return mpq_class(r.stats.area_exact.value()); }
+
+MultiPolygon one(const Ring& r) { return {OgcPolygon{r, {}}}; }
+
+// The bowtie (0 0, 2 2, 2 0, 0 2) crosses itself at (1 1): its left triangle runs
+// counterclockwise (winding +1), its right one clockwise (-1), each of area 1.
+TEST(FillRules, BowtieAreasFollowTheWindingNumbersOfItsTwoTriangles) {
+  const MultiPolygon bowtie = one({{0, 0}, {2, 2}, {2, 0}, {0, 2}});
+  for (const auto& k : exact_kernels()) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(area_of(make_valid(bowtie, with(FillRule::evenodd, k))), 2);
+    EXPECT_EQ(area_of(make_valid(bowtie, with(FillRule::nonzero, k))), 2);
+    const BooleanOutput pos = make_valid(bowtie, with(FillRule::positive, k));
+    EXPECT_EQ(area_of(pos), 1);
+    ASSERT_EQ(pos.output.polygons.size(), 1u);
+    EXPECT_EQ(pos.output.polygons[0].shell.size(), 3u);
+    for (const Point& p : pos.output.polygons[0].shell) EXPECT_LE(p.x, 1.0);  // the left triangle
+    EXPECT_EQ(area_of(make_valid(bowtie, with(FillRule::negative, k))), 1);
+    EXPECT_EQ(pos.stats.crossings, 1u);
+  }
+}
+
+// The pentagram (0 0, 2 6, 4 0, -1 4, 5 4) runs clockwise: its five tips wind -1 and its
+// inner pentagon -2. Its signed area is -16 = -(tips + 2 P), where P is the pentagon's area,
+// whose corners are where its edges' lines meet: y = 3x, y = 12 - 3x, y = (16 - 4x)/5,
+// y = 4 and y = 4x/5.
+TEST(FillRules, PentagramUnderEvenoddLosesItsInnerPentagon) {
+  const MultiPolygon star = one({{0, 0}, {2, 6}, {4, 0}, {-1, 4}, {5, 4}});
+  const std::vector<std::pair<mpq_class, mpq_class>> pentagon{{mpq_class(16, 19), mpq_class(48, 19)},
+                                                              {mpq_class(4, 3), 4},
+                                                              {mpq_class(8, 3), 4},
+                                                              {mpq_class(60, 19), mpq_class(48, 19)},
+                                                              {2, mpq_class(8, 5)}};
+  mpq_class twice = 0;
+  for (std::size_t i = 0; i < pentagon.size(); ++i) {
+    const auto& [x0, y0] = pentagon[i];
+    const auto& [x1, y1] = pentagon[(i + 1) % pentagon.size()];
+    twice += x0 * y1 - x1 * y0;
+  }
+  const mpq_class p = abs(twice) / 2;
+  for (const auto& k : exact_kernels()) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(area_of(make_valid(star, with(FillRule::evenodd, k))), 16 - 2 * p);
+    EXPECT_EQ(area_of(make_valid(star, with(FillRule::nonzero, k))), 16 - p);
+    EXPECT_EQ(area_of(make_valid(star, with(FillRule::negative, k))), 16 - p);
+    const BooleanOutput positive = make_valid(star, with(FillRule::positive, k));
+    EXPECT_TRUE(positive.output.polygons.empty());
+    EXPECT_EQ(make_valid(star, with(FillRule::evenodd, k)).output.polygons.size(), 5u);  // the tips
+  }
+}
+
+// Two 2 x 2 squares overlapping in a unit square, one given clockwise, and a disjoint
+// unit square: the union rule turns them all counterclockwise.
+TEST(FillRules, OverlappingPartsUnionAndIntersect) {
+  const MultiPolygon parts{{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {}},
+                           {{{1, 1}, {1, 3}, {3, 3}, {3, 1}}, {}},
+                           {{{5, 5}, {6, 5}, {6, 6}, {5, 6}}, {}}};
+  for (const auto& k : exact_kernels()) {
+    SCOPED_TRACE(k);
+    BooleanOptions o;
+    o.kernel = k;
+    o.area_exact = true;
+    const BooleanOutput u = union_all(parts, o);
+    EXPECT_EQ(area_of(u), 8);
+    EXPECT_EQ(u.output.polygons.size(), 2u);
+    const MultiPolygon first_two(parts.begin(), parts.begin() + 2);
+    EXPECT_EQ(area_of(intersection_all(first_two, o)), 1);
+    EXPECT_TRUE(intersection_all(parts, o).output.polygons.empty());
+    // Read together by nonzero without turning them, the clockwise square cancels the other
+    // where they overlap: 4 - 1 + 4 - 1 + 1.
+    EXPECT_EQ(area_of(union_all(parts, with(FillRule::nonzero, k))), 7);
+    EXPECT_EQ(area_of(union_all(parts, with(FillRule::positive, k))), 3 + 1);
+  }
+}
+
+// A square traced twice winds 2 around its inside; a figure eight repeating the vertex
+// (2 2) makes two counterclockwise loops that touch there.
+TEST(FillRules, RingsTracedTwiceAndRepeatingAVertex) {
+  const MultiPolygon twice = one({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  const MultiPolygon eight = one({{0, 0}, {2, 0}, {2, 2}, {4, 2}, {4, 4}, {2, 4}, {2, 2}, {0, 2}});
+  for (const auto& k : exact_kernels()) {
+    SCOPED_TRACE(k);
+    EXPECT_TRUE(make_valid(twice, with(FillRule::evenodd, k)).output.polygons.empty());
+    EXPECT_EQ(area_of(make_valid(twice, with(FillRule::nonzero, k))), 1);
+    EXPECT_TRUE(make_valid(twice, with(FillRule::negative, k)).output.polygons.empty());
+    const BooleanOutput e = make_valid(eight, with(FillRule::evenodd, k));
+    EXPECT_EQ(area_of(e), 8);
+    EXPECT_EQ(e.output.rounded_valid, std::optional<bool>(true));
+  }
+}
+
+// Three edges through one crossing point: the bowtie's diagonals cross at (1 1), where the
+// vertical edge of the triangle T = (1 -1, 1 3, -1 1) (counterclockwise, area 4) passes
+// too; the bowtie's left triangle (area 1, winding +1) lies in T with two corners on T's
+// edges, its right triangle (area 1, winding -1) outside. Windings: 2 in the left triangle,
+// 1 in the rest of T, -1 in the right triangle.
+TEST(FillRules, ThreeEdgesThroughOneCrossing) {
+  const MultiPolygon rings{{{{0, 0}, {2, 2}, {2, 0}, {0, 2}}, {}}, {{{1, -1}, {1, 3}, {-1, 1}}, {}}};
+  for (const auto& k : exact_kernels()) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(area_of(make_valid(rings, with(FillRule::nonzero, k))), 5);
+    EXPECT_EQ(area_of(make_valid(rings, with(FillRule::evenodd, k))), 3 + 1);
+    EXPECT_EQ(area_of(make_valid(rings, with(FillRule::positive, k))), 4);
+    EXPECT_EQ(area_of(make_valid(rings, with(FillRule::negative, k))), 1);
+    EXPECT_EQ(make_valid(rings, with(FillRule::nonzero, k)).stats.crossings, 1u);  // one point, found thrice
+  }
+}
+
+// A shell given clockwise and its hole counterclockwise: the union rule turns both, so the
+// hole is cut out; positive (rings as given) keeps only the hole.
+TEST(FillRules, UnionRuleOrientsShellsAndHolesAsOgcReadsThem) {
+  const MultiPolygon framed{{{{0, 0}, {0, 4}, {4, 4}, {4, 0}}, {{{1, 1}, {3, 1}, {3, 3}, {1, 3}}}}};
+  for (const auto& k : exact_kernels()) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(area_of(make_valid(framed, with(FillRule::union_, k))), 12);
+    EXPECT_EQ(area_of(make_valid(framed, with(FillRule::positive, k))), 0);
+    EXPECT_EQ(area_of(make_valid(framed, with(FillRule::negative, k))), 12);
+    EXPECT_EQ(area_of(make_valid(framed, with(FillRule::evenodd, k))), 12);
+  }
+}
+
+// On valid input, a fill rule that reads it as OGC does changes nothing: the same region
+// (exact areas) for every operation, A a square with a hole, B a square across it.
+TEST(FillRules, ValidInputGivesWhatTheDefaultPathGives) {
+  const MultiPolygon a{{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{1, 1}, {1, 3}, {3, 3}, {3, 1}}}}};
+  const MultiPolygon b = one({{2, -1}, {5, -1}, {5, 2}, {2, 2}});
+  for (const auto& k : exact_kernels()) {
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
+                               Operation::symmetric_difference}) {
+      SCOPED_TRACE(k + " " + std::string(operation_name(op)));
+      BooleanOptions plain;
+      plain.op = op;
+      plain.kernel = k;
+      plain.area_exact = true;
+      const BooleanOutput expected = compute(to_polygon(a), to_polygon(b), plain);
+      for (const FillRule rule : {FillRule::union_, FillRule::evenodd}) {
+        const BooleanOutput got = compute(fill_rule_polygon(a, rule), fill_rule_polygon(b, rule), with(rule, k, op));
+        EXPECT_EQ(got.stats.area_exact, expected.stats.area_exact);
+        EXPECT_EQ(got.output.polygons.size(), expected.output.polygons.size());
+      }
+    }
+  }
+}
+
+TEST(FillRules, InexactKernelsRunOrFailCleanly) {
+  const MultiPolygon star = one({{0, 0}, {2, 6}, {4, 0}, {-1, 4}, {5, 4}});
+  for (const auto k : kernel_names()) {
+    if (is_exact_kernel(k)) continue;
+    try {
+      const BooleanOutput r = make_valid(star, with(FillRule::evenodd, std::string(k)));
+      std::cout << k << ": pentagram evenodd area " << r.stats.area.value_or(-1) << "\n";  // recorded
+    } catch (const KernelFailure& e) {
+      std::cout << k << ": " << e.what() << "\n";
+    }
+  }
+}
+
+TEST(FillRules, BadOptionsAndInputAreErrors) {
+  const Polygon square{{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, PolygonType::island};
+  BooleanOptions o = with(FillRule::evenodd, "exact");
+  o.regular = false;
+  EXPECT_THROW(compute(square, square, o), std::invalid_argument);
+  EXPECT_THROW(intersection_all({}, with(FillRule::union_, "exact")), InvalidInput);
+  EXPECT_THROW(union_all(one({{0, 0}, {1, 0}, {1, std::numeric_limits<double>::quiet_NaN()}}), with(FillRule::union_, "exact")),
+               InvalidInput);
+  EXPECT_THROW(make_valid(one({{0, 0}, {1, 0}, {1, 1}}), with(FillRule::evenodd, "no-such-kernel")), std::invalid_argument);
+  EXPECT_TRUE(union_all({}, with(FillRule::union_, "exact")).output.polygons.empty());
+}
+
+}  // namespace
+}  // namespace mk

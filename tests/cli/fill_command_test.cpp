@@ -1,0 +1,89 @@
+// The fill-rule options and the parts forms of the command (issue 13): what they accept,
+// and clear errors with the documented exit codes for what they do not.
+// [BRIEF §1, extended by issue 13] (fill rules) [OGC06-103 §7]
+// Preconditions: the built mkbool (MK_CLI_EXE).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace mk::test {
+namespace {
+
+const std::string kBowtie = "POLYGON((0 0,2 2,2 0,0 2,0 0))";
+const std::string kSquare = "POLYGON((0 0,2 0,2 2,0 2,0 0))";
+
+TEST(cliFill, SelfCrossingInputIsRefusedWithoutAFillRuleAndReadWithOne) {
+  const ProcessResult refused = run_mkbool({"union", kBowtie, kSquare});
+  EXPECT_EQ(refused.exit_code, 3) << describe(refused);
+  EXPECT_NE(refused.err.find("crosses"), std::string::npos) << describe(refused);
+  const ProcessResult read = run_mkbool({"union", kBowtie, kSquare, "--fill-rule", "evenodd", "--stats"});
+  ASSERT_EQ(read.exit_code, 0) << describe(read);
+  // The square covers the bowtie: evenodd gives the square, area 4.
+  EXPECT_NE(read.err.find("\"area_exact\":\"4\""), std::string::npos) << describe(read);
+}
+
+TEST(cliFill, PartsFormsReadFilesOfOneWktPerLineAndGeoJson) {
+  TempDir dir;
+  const std::string lines = (dir.path() / "parts.wkt").string();
+  {
+    std::ofstream f(lines);
+    f << "POLYGON((0 0,2 0,2 2,0 2,0 0))\n\nPOLYGON((1 1,3 1,3 3,1 3,1 1))\nMULTIPOLYGON(((5 5,6 5,6 6,5 6,5 5)))\n";
+  }
+  const ProcessResult u = run_mkbool({"union-all", lines, "--stats"});
+  ASSERT_EQ(u.exit_code, 0) << describe(u);
+  EXPECT_NE(u.err.find("\"area_exact\":\"8\""), std::string::npos) << describe(u);
+  const ProcessResult i = run_mkbool({"intersection-all", lines});
+  ASSERT_EQ(i.exit_code, 0) << describe(i);
+  EXPECT_EQ(i.out, "POLYGON EMPTY\n");
+  const std::string features =
+      R"({"type":"FeatureCollection","features":[)"
+      R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[2,0],[2,2],[0,2],[0,0]]]}},)"
+      R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[0,2],[2,2],[2,0],[0,0]]]}}]})";
+  const ProcessResult g = run_mkbool({"union-all", "-", "--format", "geojson", "--stats"}, features);
+  ASSERT_EQ(g.exit_code, 0) << describe(g);
+  EXPECT_NE(g.err.find("\"area_exact\":\"4\""), std::string::npos) << describe(g);  // one square, twice
+}
+
+TEST(cliFill, BatchLinesMayNameAFillRule) {
+  const std::string lines =
+      R"x({"id":1,"op":"union","a_wkt":"POLYGON((0 0,2 2,2 0,0 2,0 0))","b_wkt":"POLYGON EMPTY","fill_rule":"positive"})x"
+      "\n"
+      R"x({"id":2,"op":"union","a_wkt":"POLYGON((0 0,2 2,2 0,0 2,0 0))","b_wkt":"POLYGON EMPTY"})x"
+      "\n"
+      R"x({"id":3,"op":"union","a_wkt":"POLYGON((0 0,2 2,2 0,0 2,0 0))","b_wkt":"POLYGON EMPTY","fill_rule":"odd"})x"
+      "\n";
+  const ProcessResult r = run_mkbool({"batch", "-"}, lines);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto first = r.out.find("\"id\":1");
+  const auto second = r.out.find("\"id\":2");
+  const auto third = r.out.find("\"id\":3");
+  ASSERT_TRUE(first != std::string::npos && second != std::string::npos && third != std::string::npos) << r.out;
+  const std::string one = r.out.substr(first, second - first);
+  EXPECT_NE(one.find("\"area_exact\":\"1\""), std::string::npos) << one;  // the left triangle
+  EXPECT_NE(r.out.substr(second, third - second).find("crosses"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.substr(third).find("unknown fill_rule 'odd'"), std::string::npos) << r.out;
+}
+
+TEST(cliFill, BadArgumentsAndInputGetClearErrors) {
+  const ProcessResult rule = run_mkbool({"make-valid", kBowtie, "--fill-rule", "odd"});
+  EXPECT_EQ(rule.exit_code, 2) << describe(rule);
+  const ProcessResult nonregular = run_mkbool({"union", kBowtie, kSquare, "--fill-rule", "evenodd", "--non-regular"});
+  EXPECT_EQ(nonregular.exit_code, 2) << describe(nonregular);
+  const ProcessResult missing = run_mkbool({"union-all"});
+  EXPECT_EQ(missing.exit_code, 2) << describe(missing);
+  const ProcessResult native = run_mkbool({"make-valid", R"({"rings":[[[0,0],[1,0],[1,1]]],"type":"island"})"});
+  EXPECT_EQ(native.exit_code, 3) << describe(native);
+  EXPECT_NE(native.err.find("native JSON has no parts"), std::string::npos) << describe(native);
+  const ProcessResult bad_line = run_mkbool({"union-all", "-"}, "POLYGON((0 0,1 0,1 1,0 0))\nPOLYGON((0 0,1 0,1 1))\n");
+  EXPECT_EQ(bad_line.exit_code, 3) << describe(bad_line);
+  EXPECT_NE(bad_line.err.find("line 2: "), std::string::npos) << describe(bad_line);
+  const ProcessResult open = run_mkbool({"union-all", "POLYGON((0 0,1 0,1 1))"});
+  EXPECT_EQ(open.exit_code, 3) << describe(open);
+  const ProcessResult empty = run_mkbool({"intersection-all", "POLYGON EMPTY"});
+  EXPECT_EQ(empty.exit_code, 3) << describe(empty);
+}
+
+}  // namespace
+}  // namespace mk::test
