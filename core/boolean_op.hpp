@@ -31,6 +31,9 @@ struct Options {
   bool regular = true;
   EfOrganisation ef = EfOrganisation::hash;
   PairSearch pair_search = PairSearch::sweep;
+  // Threads for the phases that run in parallel; 0: every core. The result is the same,
+  // bit for bit, on any number of threads.
+  unsigned threads = 0;
 };
 
 struct Stats {

@@ -101,23 +101,32 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
     }
   }
   EdgeInsertions inserted;  // points of the polygon on its own edges, by edge index
+  // Of the proper crossings, the error names the one met first walking the rings: the first
+  // edge (in input order) that crosses an earlier one, and the earliest of those; whatever
+  // order the search finds them in.
+  std::pair<int, int> crossing{-1, -1};
   for_each_candidate_pair<K>(pts, x_rank, items, false, search, [&](int i, int j) {
     const SweepItem& a = items[i];
     const SweepItem& b = items[j];
     if (a.lo == b.lo && a.hi == b.hi) return;  // identical as sets: allowed [MK89 §2.2]
     const auto rel = relate_segments_by_id<K>(pts, a.lo, a.hi, b.lo, b.hi);
     if (rel.proper_crossing) {
-      const EdgeRef ea = refs[i];
-      const EdgeRef eb = refs[j];
-      throw InvalidInput(edge_name(poly_name, rings[ea.ring], ea.ring, ea.k) + " crosses " +
-                         edge_name(poly_name, rings[eb.ring], eb.ring, eb.k) +
-                         ": the polygon is not orientable and cannot be made vertex-complete");
+      const std::pair<int, int> found{std::max(i, j), std::min(i, j)};
+      if (crossing.first < 0 || found < crossing) crossing = found;
+      return;
     }
     if (rel.c_inside_ab) inserted.add(i, b.lo);
     if (rel.d_inside_ab) inserted.add(i, b.hi);
     if (rel.a_inside_cd) inserted.add(j, a.lo);
     if (rel.b_inside_cd) inserted.add(j, a.hi);
   });
+  if (crossing.first >= 0) {
+    const EdgeRef ea = refs[crossing.first];
+    const EdgeRef eb = refs[crossing.second];
+    throw InvalidInput(edge_name(poly_name, rings[ea.ring], ea.ring, ea.k) + " crosses " +
+                       edge_name(poly_name, rings[eb.ring], eb.ring, eb.k) +
+                       ": the polygon is not orientable and cannot be made vertex-complete");
+  }
   if (inserted.empty()) return;
   inserted.group();
   std::vector<int> ins;

@@ -35,16 +35,12 @@ namespace detail {
 // each fragment. Crossing a ray of x counterclockwise raises the depth when the fragment
 // leaves the vertex (x's region is on its left) and lowers it when it arrives.
 template <Kernel K>
-void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, const Classification& cls,
-                const WindingLocator<K>& x_locator) {
+void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, const Classification& cls, int anchor) {
   const PreparedPolygon& x = arr.polygon[xi];
   const RayTable& x_rays = cls.rays[xi];
   const DirectionOrder<K> order(arr.points);
   const int first = p.cycle_first_fragment[c];
   const int last = p.cycle_first_fragment[c + 1];
-  const Edge& e0 = p.edges[p.fragments[first].edge];
-  // [MK89 §4.3 step 1] One located point per ring: just left of its first fragment.
-  const int anchor = x_locator.winding(e0.src, e0.dst, Side::left);
   int left = anchor;
   // At a vertex where only the ring's own two fragments meet (count 2 in its own ray table),
   // those two rays are known without reading them: the fragment arriving and the one leaving.
@@ -91,14 +87,22 @@ template <Kernel K>
 Classification classify_fragments(Arrangement<K>& arr) {
   const int nv = arr.num_vertices();
   Classification cls{{RayTable(arr.polygon[0], nv), RayTable(arr.polygon[1], nv)}};
-  // Each locator answers one query per cycle of A and of B.
-  const std::size_t queries = arr.polygon[0].cycles.size() + arr.polygon[1].cycles.size();
-  const std::array<WindingLocator<K>, 2> locators{make_locator(arr, arr.polygon[0], queries),
-                                                  make_locator(arr, arr.polygon[1], queries)};
-  for (auto& p : arr.polygon) {
+  // [MK89 §4.3 step 1] One located point per ring: just left of its first fragment. Each
+  // locator answers the queries of every cycle of A and of B in one batch.
+  std::vector<LocatorQuery> queries;
+  for (const auto& p : arr.polygon) {
     for (int c = 0; c + 1 < static_cast<int>(p.cycle_first_fragment.size()); ++c) {
-      detail::walk_cycle(arr, p, c, 0, cls, locators[0]);
-      detail::walk_cycle(arr, p, c, 1, cls, locators[1]);
+      const Edge& e0 = p.edges[p.fragments[p.cycle_first_fragment[c]].edge];
+      queries.push_back({e0.src, e0.dst, Side::left});
+    }
+  }
+  const std::array<std::vector<int>, 2> anchors{make_locator(arr, arr.polygon[0], queries.size()).windings(queries),
+                                                make_locator(arr, arr.polygon[1], queries.size()).windings(queries)};
+  std::size_t q = 0;
+  for (auto& p : arr.polygon) {
+    for (int c = 0; c + 1 < static_cast<int>(p.cycle_first_fragment.size()); ++c, ++q) {
+      detail::walk_cycle(arr, p, c, 0, cls, anchors[0][q]);
+      detail::walk_cycle(arr, p, c, 1, cls, anchors[1][q]);
     }
   }
   return cls;
