@@ -7,8 +7,6 @@
 #pragma once
 
 #include <algorithm>
-#include <iterator>
-#include <set>
 #include <span>
 #include <vector>
 
@@ -23,6 +21,112 @@ struct LocatorQuery {
   int t = -1;
   Side side = Side::left;
 };
+
+namespace detail {
+
+// A sequence of ints kept in an order that a caller-given comparison defines (the order of
+// edges crossing a sweep line), in sorted blocks of at most 2 * kBlock: a balanced tree's
+// O(log n) comparisons per operation, without a node allocation per element and with
+// neighbours next to each other in memory.
+class BlockedOrder {
+ public:
+  // Inserts e (not present); returns the element after it, or -1.
+  template <class Less>
+  int insert(int e, Less&& less) {
+    if (blocks_.empty()) {
+      blocks_.push_back({e});
+      finger_ = {0, 0};
+      return -1;
+    }
+    auto [b, i] = find(e, less);
+    if (b == blocks_.size()) {  // after everything: at the end of the last block
+      b = blocks_.size() - 1;
+      i = blocks_[b].size();
+    }
+    auto& block = blocks_[b];
+    block.insert(block.begin() + static_cast<std::ptrdiff_t>(i), e);
+    int after = -1;
+    if (i + 1 < block.size()) {
+      after = block[i + 1];
+    } else if (b + 1 < blocks_.size()) {
+      after = blocks_[b + 1].front();
+    }
+    finger_ = {b, i};
+    if (block.size() > 2 * kBlock) {
+      std::vector<int> upper(block.begin() + kBlock, block.end());
+      block.resize(kBlock);
+      blocks_.insert(blocks_.begin() + static_cast<std::ptrdiff_t>(b) + 1, std::move(upper));
+      if (i >= kBlock) finger_ = {b + 1, i - kBlock};
+    }
+    return after;
+  }
+
+  // Removes e, which is present.
+  template <class Less>
+  void erase(int e, Less&& less) {
+    const auto [b, i] = find(e, less);
+    auto& block = blocks_[b];
+    block.erase(block.begin() + static_cast<std::ptrdiff_t>(i));
+    finger_ = {b, i};
+    if (block.empty()) {
+      blocks_.erase(blocks_.begin() + static_cast<std::ptrdiff_t>(b));
+      finger_ = {0, 0};
+    }
+  }
+
+  // The first element x with !less(x, key), or -1.
+  template <class Key, class Less>
+  int lower_bound(const Key& key, Less&& less) {
+    const auto [b, i] = find(key, less);
+    if (b == blocks_.size()) return -1;
+    finger_ = {b, i};
+    return i < blocks_[b].size() ? blocks_[b][i] : (b + 1 < blocks_.size() ? blocks_[b + 1].front() : -1);
+  }
+
+ private:
+  static constexpr std::size_t kBlock = 64;
+  static constexpr std::size_t kNear = 4;  // steps tried from the finger before a search
+
+  struct Place {
+    std::size_t block, index;
+  };
+
+  // The lower bound of key as (block, index): the first block whose last element is not
+  // before key, and the position in it (blocks_.size() when every element is before key).
+  // Sweeps move little between operations, so the place of the last operation is tried
+  // first, a few steps either way, before a binary search.
+  template <class Key, class Less>
+  Place find(const Key& key, Less& less) const {
+    if (finger_.block < blocks_.size()) {
+      const auto& block = blocks_[finger_.block];
+      std::size_t i = std::min(finger_.index, block.size());
+      std::size_t steps = 0;
+      while (i < block.size() && steps < kNear && less(block[i], key)) ++i, ++steps;
+      while (i > 0 && steps < kNear && !less(block[i - 1], key)) --i, ++steps;
+      const bool before_ok = i > 0 ? less(block[i - 1], key)
+                                   : (finger_.block == 0 || less(blocks_[finger_.block - 1].back(), key));
+      const bool at_ok = i < block.size() ? !less(block[i], key) : finger_.block + 1 == blocks_.size();
+      if (before_ok && at_ok) return {i < block.size() ? finger_.block : blocks_.size(), i};
+    }
+    std::size_t lo = 0, hi = blocks_.size();
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (less(blocks_[mid].back(), key)) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
+    if (lo == blocks_.size()) return {lo, 0};
+    const auto& block = blocks_[lo];
+    return {lo, static_cast<std::size_t>(std::lower_bound(block.begin(), block.end(), key, less) - block.begin())};
+  }
+
+  std::vector<std::vector<int>> blocks_;
+  Place finger_{0, 0};
+};
+
+}  // namespace detail
 
 template <Kernel K>
 class WindingLocator {
@@ -109,7 +213,8 @@ class WindingLocator {
   // Sign of orient(lo, hi, q): positive when q lies above edge e.
   int side_of(int e, const LocatorQuery& q) const {
     const auto& p = arr_.points;
-    return orient_beside<K>(p[lo(e)], p[hi(e)], p[q.v], p[q.t], q.side);
+    const int l = lo(e), h = hi(e);
+    return orient_beside<K>(p[l], p[h], p[q.v], p[q.t], q.side, q.v == l || q.v == h);
   }
 
   bool is_below(int a, int b) const {
@@ -158,30 +263,25 @@ class WindingLocator {
     };
     const auto [q_begin, by_position] = bucket(static_cast<int>(queries.size()), position);
 
-    using Line = std::set<int, Below>;
-    Line line(Below{this});
-    std::vector<typename Line::iterator> where(static_cast<std::size_t>(m));
+    detail::BlockedOrder line;
+    const Below below_of{this};
     std::vector<int> below(static_cast<std::size_t>(m), 0);  // ray count just below each edge
     const auto contribution = [&](int e) { return parity ? 1 : (edges_[e].src > edges_[e].dst ? 1 : -1); };
     std::vector<int> entering;
     for (int p = 0; p < n_points; ++p) {
-      for (int i = hi_begin[p]; i < hi_begin[p + 1]; ++i) line.erase(where[by_hi[i]]);
-      entering.clear();
-      for (int i = lo_begin[p]; i < lo_begin[p + 1]; ++i) {
-        const int e = by_lo[i];
-        where[e] = line.insert(e).first;
-        entering.push_back(e);
-      }
-      // Edges entering at p lie next to each other on the line: their values from the top.
-      std::sort(entering.begin(), entering.end(), [&](int a, int b) { return is_below(b, a); });
+      for (int i = hi_begin[p]; i < hi_begin[p + 1]; ++i) line.erase(by_hi[i], below_of);
+      // Edges entering at p lie next to each other on the line: inserted from the top, each
+      // finds the edge just above it already there, and takes its value from it.
+      entering.assign(by_lo.begin() + lo_begin[p], by_lo.begin() + lo_begin[p + 1]);
+      if (entering.size() > 1) std::sort(entering.begin(), entering.end(), [&](int a, int b) { return is_below(b, a); });
       for (const int e : entering) {
-        const auto up = std::next(where[e]);
-        below[e] = contribution(e) + (up == line.end() ? 0 : below[*up]);
+        const int up = line.insert(e, below_of);
+        below[e] = contribution(e) + (up < 0 ? 0 : below[up]);
       }
       for (int i = q_begin[p + 1]; i < q_begin[p + 2]; ++i) {
         const int qi = by_position[i];
-        const auto it = line.lower_bound(queries[qi]);  // the first edge above the point
-        out[qi] = it == line.end() ? 0 : below[*it];
+        const int e = line.lower_bound(queries[qi], below_of);  // the first edge above the point
+        out[qi] = e < 0 ? 0 : below[e];
       }
     }
   }

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <span>
 #include <cstdint>
 #include <numeric>
 #include <utility>
@@ -54,118 +56,19 @@ struct Chain {
 
 inline constexpr int kMaxChain = 256;
 
-// The chains whose boxes are in the sweep, as an interval tree over y: a treap keyed by the
-// chains' lowest y (ties by chain index), each node holding the highest y in its subtree.
-// Nodes live in one array; priorities come from a hash of the chain index, so the tree's
-// shape, and the order in which a query reports chains, depend on the input alone.
-template <Kernel K>
-class ChainTree {
- public:
-  ChainTree(const std::vector<typename K::Point>& pts, const std::vector<Chain>& chains) : pts_(pts), chains_(chains) {}
-
-  void insert(int chain) {
-    const int node = static_cast<int>(nodes_.size());
-    nodes_.push_back({chain, -1, -1, chains_[chain].y_max, priority(chain)});
-    auto [l, r] = split(root_, chain);
-    root_ = join(join(l, node), r);
-  }
-
-  void erase(int chain) { root_ = erase(root_, chain); }
-
-  // Calls f(chain) for every chain in the tree whose y-range meets [y(lo), y(hi)] (closed).
-  template <class F>
-  void for_each_overlapping(int lo, int hi, F&& f) const {
-    query(root_, lo, hi, f);
-  }
-
- private:
-  struct Node {
-    int chain;
-    int left, right;
-    int max_hi;  // point id of the highest y in the subtree
-    std::uint32_t priority;
-  };
-
-  static std::uint32_t priority(int chain) {
-    std::uint64_t z = static_cast<std::uint64_t>(chain) * 0x9E3779B97F4A7C15ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    return static_cast<std::uint32_t>(z >> 32);
-  }
-  bool y_less(int u, int w) const { return K::compare_y(pts_[u], pts_[w]) == Sign::negative; }
-  bool key_less(int a, int b) const {
-    const Sign s = K::compare_y(pts_[chains_[a].y_min], pts_[chains_[b].y_min]);
-    return s != Sign::zero ? s == Sign::negative : a < b;
-  }
-  void pull(int t) {
-    Node& n = nodes_[t];
-    n.max_hi = chains_[n.chain].y_max;
-    if (n.left >= 0 && y_less(n.max_hi, nodes_[n.left].max_hi)) n.max_hi = nodes_[n.left].max_hi;
-    if (n.right >= 0 && y_less(n.max_hi, nodes_[n.right].max_hi)) n.max_hi = nodes_[n.right].max_hi;
-  }
-  // Keys before `chain`'s key, and the others.
-  std::pair<int, int> split(int t, int chain) {
-    if (t < 0) return {-1, -1};
-    if (key_less(nodes_[t].chain, chain)) {
-      auto [l, r] = split(nodes_[t].right, chain);
-      nodes_[t].right = l;
-      pull(t);
-      return {t, r};
-    }
-    auto [l, r] = split(nodes_[t].left, chain);
-    nodes_[t].left = r;
-    pull(t);
-    return {l, t};
-  }
-  int join(int l, int r) {
-    if (l < 0) return r;
-    if (r < 0) return l;
-    if (nodes_[l].priority > nodes_[r].priority) {
-      nodes_[l].right = join(nodes_[l].right, r);
-      pull(l);
-      return l;
-    }
-    nodes_[r].left = join(l, nodes_[r].left);
-    pull(r);
-    return r;
-  }
-  int erase(int t, int chain) {
-    if (t < 0) return t;
-    Node& n = nodes_[t];
-    if (n.chain == chain) return join(n.left, n.right);
-    if (key_less(chain, n.chain)) {
-      n.left = erase(n.left, chain);
-    } else {
-      n.right = erase(n.right, chain);
-    }
-    pull(t);
-    return t;
-  }
-  template <class F>
-  void query(int t, int lo, int hi, F& f) const {
-    while (t >= 0) {
-      const Node& n = nodes_[t];
-      if (y_less(n.max_hi, lo)) return;  // everything here lies below
-      query(n.left, lo, hi, f);
-      if (y_less(hi, chains_[n.chain].y_min)) return;  // this and the right subtree lie above
-      if (!y_less(chains_[n.chain].y_max, lo)) f(n.chain);
-      t = n.right;
-    }
-  }
-
-  const std::vector<typename K::Point>& pts_;
-  const std::vector<Chain>& chains_;
-  std::vector<Node> nodes_;
-  int root_ = -1;
-};
-
 }  // namespace detail
 
 // The candidate pairs of a set of items, in parts that can be searched on different threads:
 // every pair belongs to exactly one part, and the parts and the order of the pairs within
 // each depend on the input alone. A pair is (i, j), item indices, for every two items whose
 // bounding boxes overlap (closed boxes), except pairs of segments of one chain, which never
-// meet but at shared ends. With `bipartite`, only pairs from different groups (0 and 1) are
-// reported: part g holds the pairs found when an item of group g enters the sweep.
+// meet but at shared ends; with `bipartite`, only pairs from different groups (0 and 1).
+// Chains are paired by a recursive partition of their boxes, as Boost.Geometry's
+// `partition` does: a set is split at a pivot along x (x-ranks) or y (alternately) into the
+// boxes below it, above it and across it; boxes below never meet boxes above, so the
+// search goes on in the two halves, and between the boxes across and all the others, with
+// the other axis. Small sets are paired directly. The first levels of the recursion are
+// planned as separate parts.
 template <Kernel K>
 class CandidatePairs {
  public:
@@ -173,12 +76,15 @@ class CandidatePairs {
   CandidatePairs(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
                  const std::vector<SweepItem>& items, bool bipartite, PairSearch search)
       : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite), search_(search) {
-    if (search_ == PairSearch::sweep) build_chains();
+    if (search_ == PairSearch::sweep) {
+      build_chains();
+      plan();
+    }
   }
 
-  std::size_t parts() const { return search_ == PairSearch::sweep && bipartite_ ? 2 : 1; }
+  std::size_t parts() const { return search_ == PairSearch::sweep ? tasks_.size() : 1; }
 
-  // Calls f(i, j) for every pair of part `part`.
+  // Calls f(i, j) for every pair of part `part`. Each part may be searched once.
   template <class F>
   void for_each_in_part(std::size_t part, F&& f) const {
     if (search_ == PairSearch::all_pairs) {
@@ -191,10 +97,27 @@ class CandidatePairs {
       }
       return;
     }
-    sweep(static_cast<int>(part), f);
+    Task& t = tasks_[part];
+    if (t.self) {
+      search_self(t.a, t.axis, 0, f);
+    } else {
+      search_both(t.a, t.b, t.axis, 0, f);
+    }
+    t = Task();
   }
 
  private:
+  // A set of chains, or two sets to pair with each other, and the axis to split first.
+  struct Task {
+    std::vector<int> a, b;
+    int axis = 0;
+    bool self = false;
+  };
+  enum class Place : unsigned char { below, above, across };
+
+  static constexpr std::size_t kDirect = 48;  // sets this small (or pairs of sets) are paired directly
+  static constexpr int kMaxDepth = 96;
+
   int xr(int id) const { return x_rank_[id]; }
   bool y_less(int u, int w) const { return K::compare_y(pts_[u], pts_[w]) == Sign::negative; }
   // The way a segment goes (see detail::Chain): along the ring, in y, vertical or not.
@@ -205,7 +128,7 @@ class CandidatePairs {
     return (it.forward ? 1 : 0) | (up + 1) << 1 | (vertical ? 8 : 0);
   }
 
-  // Cuts the items into chains and orders the chains by their left ends.
+  // Cuts the items into chains.
   void build_chains() {
     const int n = static_cast<int>(items_.size());
     order_.resize(items_.size());
@@ -237,45 +160,201 @@ class CandidatePairs {
       if (i == start) start_course = k;
     }
     if (n > 0) close(n);
-    // Chains by the x-rank of their left ends, ties in ring order: a counting sort when the
-    // chains are many next to the ranks, else a sort.
-    const std::size_t ranks = x_rank_.empty() ? 1 : static_cast<std::size_t>(x_rank_.back()) + 1;
-    const std::size_t m = chains_.size();
-    by_x_.resize(m);
-    if (m * 16 < ranks) {
-      std::iota(by_x_.begin(), by_x_.end(), 0);
-      std::stable_sort(by_x_.begin(), by_x_.end(), [&](int a, int b) { return xr(chains_[a].lo) < xr(chains_[b].lo); });
-      return;
-    }
-    std::vector<int> begin(ranks + 1, 0);
-    for (const auto& c : chains_) ++begin[xr(c.lo) + 1];
-    std::partial_sum(begin.begin(), begin.end(), begin.begin());
-    for (int c = 0; c < static_cast<int>(m); ++c) by_x_[begin[xr(chains_[c].lo)]++] = c;
   }
 
-  // The sweep over x of part `part`: chains enter in order of their left ends; each entering
-  // chain is paired with the chains in the tree whose y-ranges meet its own and whose
-  // x-ranges still reach it (the others have left the sweep and are removed).
+  // The first levels of the partition, each subproblem left at the last level a part.
+  void plan() {
+    const std::size_t m = chains_.size();
+    const int levels = m >= 32768 ? 2 : (m >= 4096 ? 1 : 0);
+    if (bipartite_) {
+      std::vector<int> a, b;
+      for (int c = 0; c < static_cast<int>(m); ++c) (chains_[c].group == 0 ? a : b).push_back(c);
+      plan_both(std::move(a), std::move(b), 0, levels);
+    } else {
+      std::vector<int> all(m);
+      std::iota(all.begin(), all.end(), 0);
+      plan_self(std::move(all), 0, levels);
+    }
+  }
+  void plan_self(std::vector<int> s, int axis, int levels) {
+    if (s.size() < 2) return;
+    if (levels == 0 || s.size() <= kDirect) {
+      tasks_.push_back({std::move(s), {}, axis, true});
+      return;
+    }
+    const auto [below, above] = split(s, axis);
+    const std::vector<int> low(s.begin(), s.begin() + below), high(s.begin() + below, s.begin() + above);
+    const std::vector<int> sides(s.begin(), s.begin() + above), across(s.begin() + above, s.end());
+    plan_self(low, 1 - axis, levels - 1);
+    plan_self(high, 1 - axis, levels - 1);
+    plan_both(sides, across, 1 - axis, levels - 1);
+    plan_self(across, 1 - axis, levels - 1);
+  }
+  void plan_both(std::vector<int> a, std::vector<int> b, int axis, int levels) {
+    if (a.empty() || b.empty()) return;
+    if (levels == 0 || a.size() * b.size() <= kDirect * kDirect / 4) {
+      tasks_.push_back({std::move(a), std::move(b), axis, false});
+      return;
+    }
+    const std::size_t na = a.size();
+    std::vector<int> ab(std::move(a));
+    ab.insert(ab.end(), b.begin(), b.end());
+    const int pivot = choose_pivot(ab, axis);
+    a.assign(ab.begin(), ab.begin() + static_cast<std::ptrdiff_t>(na));
+    const auto [a_below, a_above] = split_at(a, axis, pivot);
+    const auto [b_below, b_above] = split_at(b, axis, pivot);
+    const auto part = [](const std::vector<int>& v, std::size_t from, std::size_t to) {
+      return std::vector<int>(v.begin() + static_cast<std::ptrdiff_t>(from), v.begin() + static_cast<std::ptrdiff_t>(to));
+    };
+    plan_both(part(a, 0, a_below), part(b, 0, b_below), 1 - axis, levels - 1);
+    plan_both(part(a, a_below, a_above), part(b, b_below, b_above), 1 - axis, levels - 1);
+    plan_both(part(a, 0, a_above), part(b, b_above, b.size()), 1 - axis, levels - 1);
+    plan_both(part(a, a_above, a.size()), b, 1 - axis, levels - 1);
+  }
+
+  // The pivot along `axis`: the median of the low ends of up to 15 boxes spread over the set
+  // (an x-rank for x, a point id for y); see place().
+  int choose_pivot(std::span<const int> s, int axis) const {
+    std::array<int, 15> sample{};
+    const std::size_t k = std::min<std::size_t>(sample.size(), s.size());
+    for (std::size_t i = 0; i < k; ++i) {
+      const detail::Chain& c = chains_[s[k == 1 ? 0 : i * (s.size() - 1) / (k - 1)]];
+      sample[i] = axis == 0 ? xr(c.lo) : c.y_min;
+    }
+    const auto mid = sample.begin() + static_cast<std::ptrdiff_t>(k / 2);
+    if (axis == 0) {
+      std::nth_element(sample.begin(), mid, sample.begin() + static_cast<std::ptrdiff_t>(k));
+    } else {
+      std::nth_element(sample.begin(), mid, sample.begin() + static_cast<std::ptrdiff_t>(k),
+                       [&](int u, int w) { return y_less(u, w); });
+    }
+    return *mid;
+  }
+  // Where a box lies against the line just above the pivot's coordinate: a box ending at the
+  // pivot lies below it, one starting there and going on crosses it. Grid-aligned boxes
+  // then rarely cross the line (a closed pivot line would cross every box touching it).
+  Place place(int chain, int axis, int pivot) const {
+    const detail::Chain& c = chains_[chain];
+    if (axis == 0) {
+      if (xr(c.hi) <= pivot) return Place::below;
+      if (xr(c.lo) > pivot) return Place::above;
+      return Place::across;
+    }
+    if (!y_less(pivot, c.y_max)) return Place::below;
+    if (y_less(pivot, c.y_min)) return Place::above;
+    return Place::across;
+  }
+  // Reorders s as [below | above | across] the pivot; returns the ends of the first two.
+  std::pair<std::size_t, std::size_t> split_at(std::span<int> s, int axis, int pivot) const {
+    const auto b = std::partition(s.begin(), s.end(), [&](int c) { return place(c, axis, pivot) == Place::below; });
+    const auto e = std::partition(b, s.end(), [&](int c) { return place(c, axis, pivot) == Place::above; });
+    return {static_cast<std::size_t>(b - s.begin()), static_cast<std::size_t>(e - s.begin())};
+  }
+  std::pair<std::size_t, std::size_t> split(std::span<int> s, int axis) const {
+    return split_at(s, axis, choose_pivot(s, axis));
+  }
+
+  // The bounding box of a set of chains: x-ranks and point ids of the lowest and highest y.
+  struct Bounds {
+    int x0, x1, y0, y1;
+  };
+  Bounds bounds(std::span<const int> s) const {
+    const detail::Chain& c0 = chains_[s[0]];
+    Bounds b{xr(c0.lo), xr(c0.hi), c0.y_min, c0.y_max};
+    for (const int i : s.subspan(1)) {
+      const detail::Chain& c = chains_[i];
+      b.x0 = std::min(b.x0, xr(c.lo));
+      b.x1 = std::max(b.x1, xr(c.hi));
+      if (y_less(c.y_min, b.y0)) b.y0 = c.y_min;
+      if (y_less(b.y1, c.y_max)) b.y1 = c.y_max;
+    }
+    return b;
+  }
+  // Moves the chains of s whose boxes meet `b` to its front; returns how many.
+  std::size_t keep_meeting(std::span<int> s, const Bounds& b) const {
+    const auto e = std::partition(s.begin(), s.end(), [&](int i) {
+      const detail::Chain& c = chains_[i];
+      return xr(c.lo) <= b.x1 && b.x0 <= xr(c.hi) && !y_less(c.y_max, b.y0) && !y_less(b.y1, c.y_min);
+    });
+    return static_cast<std::size_t>(e - s.begin());
+  }
+
+  bool boxes_meet(const detail::Chain& c, const detail::Chain& d) const {
+    return xr(c.lo) <= xr(d.hi) && xr(d.lo) <= xr(c.hi) && !y_less(d.y_max, c.y_min) && !y_less(c.y_max, d.y_min);
+  }
   template <class F>
-  void sweep(int part, F& f) const {
-    detail::ChainTree<K> tree(pts_, chains_);
-    std::vector<int> gone;
-    for (const int d : by_x_) {
-      const detail::Chain& cd = chains_[d];
-      const bool queries = !bipartite_ || cd.group == part;
-      const bool enters = !bipartite_ || cd.group != part;
-      if (queries) {
-        gone.clear();
-        tree.for_each_overlapping(cd.y_min, cd.y_max, [&](int c) {
-          if (xr(chains_[c].hi) < xr(cd.lo)) {
-            gone.push_back(c);
-          } else {
-            merge(chains_[c], cd, f);
-          }
-        });
-        for (const int c : gone) tree.erase(c);
+  void pair_if_meet(int c, int d, F& f) const {
+    if (boxes_meet(chains_[c], chains_[d])) merge(chains_[c], chains_[d], f);
+  }
+
+  // Pairs within one set.
+  // `stuck`: the last split, along the other axis, separated nothing.
+  template <class F>
+  void search_self(std::span<int> s, int axis, int depth, F& f, bool stuck = false) const {
+    if (s.size() < 2) return;
+    if (s.size() <= kDirect || depth >= kMaxDepth) {
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        for (std::size_t j = i + 1; j < s.size(); ++j) pair_if_meet(s[i], s[j], f);
       }
-      if (enters) tree.insert(d);
+      return;
+    }
+    const auto [below, above] = split(s, axis);
+    if (below == 0 && above == 0) {  // every box lies across the pivot: try the other axis
+      search_self(s, 1 - axis, stuck ? kMaxDepth : depth + 1, f, true);
+      return;
+    }
+    const int next = depth + 1;
+    search_self(s.subspan(0, below), 1 - axis, next, f);
+    search_self(s.subspan(below, above - below), 1 - axis, next, f);
+    // The boxes across the pivot meet only boxes near them: the others are not searched again.
+    const std::span<int> across = s.subspan(above);
+    if (!across.empty()) {
+      const std::size_t near = keep_meeting(s.subspan(0, above), bounds(across));
+      search_both(s.subspan(0, near), across, 1 - axis, next, f);
+    }
+    search_self(across, 1 - axis, next, f);
+  }
+
+  // Pairs between two sets.
+  template <class F>
+  void search_both(std::span<int> a, std::span<int> b, int axis, int depth, F& f, bool stuck = false) const {
+    if (a.empty() || b.empty()) return;
+    // A set of one or two boxes is paired directly: splitting costs as much as pairing.
+    if (a.size() * b.size() <= kDirect * kDirect / 4 || std::min(a.size(), b.size()) <= 2 || depth >= kMaxDepth) {
+      for (const int c : a) {
+        for (const int d : b) pair_if_meet(c, d, f);
+      }
+      return;
+    }
+    int pivot = 0;
+    {  // the pivot of a and b together
+      std::array<int, 16> picks{};
+      std::size_t k = 0;
+      for (const auto* set : {&a, &b}) {
+        const std::size_t n = set->size();
+        for (std::size_t i = 0; i < 8 && i < n; ++i) picks[k++] = (*set)[n == 1 ? 0 : i * (n - 1) / std::min<std::size_t>(7, n - 1)];
+      }
+      pivot = choose_pivot(std::span<const int>(picks.data(), k), axis);
+    }
+    const auto [a_below, a_above] = split_at(a, axis, pivot);
+    const auto [b_below, b_above] = split_at(b, axis, pivot);
+    if (a_above + b_above == 0) {  // every box lies across the pivot: try the other axis
+      search_both(a, b, 1 - axis, stuck ? kMaxDepth : depth + 1, f, true);
+      return;
+    }
+    const int next = depth + 1;
+    search_both(a.subspan(0, a_below), b.subspan(0, b_below), 1 - axis, next, f);
+    search_both(a.subspan(a_below, a_above - a_below), b.subspan(b_below, b_above - b_below), 1 - axis, next, f);
+    // The boxes across the pivot meet only boxes near them: the others are not searched again.
+    const std::span<int> b_across = b.subspan(b_above);
+    if (!b_across.empty() && a_above > 0) {  // b across, a not
+      const std::size_t near = keep_meeting(a.subspan(0, a_above), bounds(b_across));
+      search_both(a.subspan(0, near), b_across, 1 - axis, next, f);
+    }
+    const std::span<int> a_across = a.subspan(a_above);
+    if (!a_across.empty()) {  // a across, all of b
+      const std::size_t near = keep_meeting(b, bounds(a_across));
+      search_both(a_across, b.subspan(0, near), 1 - axis, next, f);
     }
   }
 
@@ -311,6 +390,10 @@ class CandidatePairs {
   // d is entering it.
   template <class F>
   void merge(const detail::Chain& c, const detail::Chain& d, F& f) const {
+    if (c.last - c.first == 1 && d.last - d.first == 1) {  // two segments: their boxes meet
+      f(order_[c.first], order_[d.first]);
+      return;
+    }
     auto [i, c_end] = window(c, d);
     auto [j, d_end] = window(d, c);
     while (i < c_end && j < d_end) {
@@ -339,7 +422,7 @@ class CandidatePairs {
   PairSearch search_;
   std::vector<int> order_;
   std::vector<detail::Chain> chains_;
-  std::vector<int> by_x_;  // chain indices by the x-rank of their left ends
+  mutable std::vector<Task> tasks_;
 };
 
 // Calls f(i, j) for every candidate pair (see CandidatePairs), part after part.

@@ -14,10 +14,12 @@ enum class Side : signed char { right = -1, left = 1 };
 // Sign of orient(a, b, q) for the query point q of vertical_ray_crossing (below): which side
 // of the line a -> b the point just `side` of v -> t near v lies on. Never zero: the first
 // non-zero term of orient(a, b, v) + e (b - a) x (t - v) + s e^2 (b - a) x n.
+// `v_is_end`: the caller knows that v is a or b (the first term is zero, and an exact
+// predicate's filter cannot tell a zero cheaply).
 template <Kernel K>
 int orient_beside(const typename K::Point& a, const typename K::Point& b, const typename K::Point& v,
-                  const typename K::Point& t, Side side) {
-  int o = static_cast<int>(K::orient2d(a, b, v));
+                  const typename K::Point& t, Side side, bool v_is_end = false) {
+  int o = v_is_end ? 0 : static_cast<int>(K::orient2d(a, b, v));
   if (o == 0) o = static_cast<int>(K::orient_vectors(a, b, v, t));
   if (o == 0) {
     // b - a is parallel to t - v: cross(b - a, n) = dot(b - a, t - v), positive when they
