@@ -30,6 +30,10 @@ struct BooleanOptions {
   bool sorted_ef = false;  // the paper's sorted EF table instead of the hash table
   bool all_pairs = false;  // the paper's all-pairs intersection search
   bool area = true;        // compute BooleanStats::area and area_exact
+  // Threads for the phases that run in parallel (candidate pairs, crossings, classification,
+  // the two polygons' preparation); 0: every core. Results are the same, bit for bit, on
+  // any number of threads.
+  unsigned threads = 0;
 };
 
 struct BooleanStats {

@@ -63,6 +63,7 @@ void run_command(const CommandOptions& o) {
   options.regular = o.regular;
   options.kernel = o.kernel;
   options.area = o.stats;  // the area is only reported in --stats
+  options.threads = o.threads;
   PredicateCounters::reset();
   const BooleanOutput result = compute(a, b, options);
   const PredicateCounters counters = PredicateCounters::read();

@@ -24,6 +24,7 @@ struct CommandOptions {
   OutputFormat format = OutputFormat::wkt;
   std::string output;  // empty: standard output
   bool stats = false;
+  unsigned threads = 0;  // 0: every core
 };
 
 // Runs the operation and writes its output. Throws mk::cli::UsageError (two standard

@@ -14,6 +14,7 @@
 #include "core/arrangement.hpp"
 #include "core/edge_fragment_table.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/prepare.hpp"
 #include "core/step1_orientation.hpp"
 #include "core/step2_vertex_rings.hpp"
@@ -67,15 +68,16 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   };
   BooleanResult<K> res;
   Arrangement<K>& arr = res.arrangement;
-  arr = prepare<K>(a, b, opt.pair_search);
+  const unsigned threads = resolve_threads(opt.threads);
+  arr = prepare<K>(a, b, opt.pair_search, threads);
   hook(Step::prepared, arr);
-  normalize_orientations(arr, opt.op);  // step 1
+  normalize_orientations(arr, opt.op, threads);  // step 1
   hook(Step::oriented, arr);
   build_vertex_rings(arr);  // step 2
   hook(Step::vertex_rings, arr);
-  insert_intersections(arr, opt.pair_search);  // step 3
+  insert_intersections(arr, opt.pair_search, threads);  // step 3
   hook(Step::intersections, arr);
-  Classification cls = classify_fragments(arr);  // step 4
+  Classification cls = classify_fragments(arr, threads);  // step 4
   hook(Step::classified, arr);
   // Step 5 streams the selected fragments into EF: A's, then B's.
   const auto build = [&](auto& ef) {

@@ -10,6 +10,7 @@
 
 #include "core/arrangement.hpp"
 #include "core/locator.hpp"
+#include "core/parallel.hpp"
 #include "core/tables.hpp"
 #include "predicates/ray.hpp"
 
@@ -51,8 +52,11 @@ inline LocatorQuery depth_query(const PreparedPolygon& poly, std::size_t c,
 // Orients every cycle with FAR on its left (counterclockwise at even nesting depth), then
 // turns B against A where Table 1 says so.
 template <Kernel K>
-void normalize_orientations(Arrangement<K>& arr, Operation op) {
-  for (auto& poly : arr.polygon) {
+void normalize_orientations(Arrangement<K>& arr, Operation op, unsigned threads = 1) {
+  std::size_t work = 0;
+  for (const auto& poly : arr.polygon) work += poly.cycles.size() > 1 ? poly.cycles.size() : 0;
+  run_tasks(threads_for(4 * work, threads), 2, [&](std::size_t pi) {  // the polygons on two threads
+    PreparedPolygon& poly = arr.polygon[pi];
     // A polygon with one cycle has it at depth 0; only nested parts need the ray test.
     const bool single = poly.cycles.size() == 1;
     std::unordered_map<std::uint64_t, int> edge_count;
@@ -84,7 +88,7 @@ void normalize_orientations(Arrangement<K>& arr, Operation op) {
     for (std::size_t c = 0; c < poly.cycles.size(); ++c) {
       if (flip[c]) std::reverse(poly.cycles[c].begin(), poly.cycles[c].end());
     }
-  }
+  });
   PreparedPolygon& b = arr.polygon[1];
   const auto mutual = kTable1[op_index(op)][type_index(arr.polygon[0].type)][type_index(b.type)];
   if (mutual == MutualOrientation::opposite) {

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "core/incidence.hpp"
 #include "core/locator.hpp"
+#include "core/parallel.hpp"
 #include "predicates/ray.hpp"
 
 namespace mk {
@@ -84,9 +85,12 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
 }  // namespace detail
 
 template <Kernel K>
-Classification classify_fragments(Arrangement<K>& arr) {
+Classification classify_fragments(Arrangement<K>& arr, unsigned threads = 1) {
   const int nv = arr.num_vertices();
-  Classification cls{{RayTable(arr.polygon[0], nv), RayTable(arr.polygon[1], nv)}};
+  const std::size_t work = arr.polygon[0].fragments.size() + arr.polygon[1].fragments.size();
+  const unsigned t = threads_for(work, threads);
+  Classification cls;
+  run_tasks(t, 2, [&](std::size_t p) { cls.rays[p] = RayTable(arr.polygon[p], nv); });
   // [MK89 §4.3 step 1] One located point per ring: just left of its first fragment. Each
   // locator answers the queries of every cycle of A and of B in one batch.
   std::vector<LocatorQuery> queries;
@@ -96,15 +100,19 @@ Classification classify_fragments(Arrangement<K>& arr) {
       queries.push_back({e0.src, e0.dst, Side::left});
     }
   }
-  const std::array<std::vector<int>, 2> anchors{make_locator(arr, arr.polygon[0], queries.size()).windings(queries),
-                                                make_locator(arr, arr.polygon[1], queries.size()).windings(queries)};
-  std::size_t q = 0;
-  for (auto& p : arr.polygon) {
-    for (int c = 0; c + 1 < static_cast<int>(p.cycle_first_fragment.size()); ++c, ++q) {
-      detail::walk_cycle(arr, p, c, 0, cls, anchors[0][q]);
-      detail::walk_cycle(arr, p, c, 1, cls, anchors[1][q]);
+  std::array<std::vector<int>, 2> anchors;
+  run_tasks(t, 2, [&](std::size_t x) { anchors[x] = make_locator(arr, arr.polygon[x], queries.size()).windings(queries); });
+  // The two polygons' rings are walked on separate threads: a walk writes the depths of its
+  // own polygon's fragments only.
+  const int first_of_b = static_cast<int>(arr.polygon[0].cycle_first_fragment.size()) - 1;
+  run_tasks(t, 2, [&](std::size_t pi) {
+    PreparedPolygon& p = arr.polygon[pi];
+    const int q0 = pi == 0 ? 0 : first_of_b;
+    for (int c = 0; c + 1 < static_cast<int>(p.cycle_first_fragment.size()); ++c) {
+      detail::walk_cycle(arr, p, c, 0, cls, anchors[0][q0 + c]);
+      detail::walk_cycle(arr, p, c, 1, cls, anchors[1][q0 + c]);
     }
-  }
+  });
   return cls;
 }
 
