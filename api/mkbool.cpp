@@ -4,7 +4,10 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -13,27 +16,40 @@
 #include "arithmetic/kernels/exact_kernel.hpp"
 #include "arithmetic/kernels/filtered_kernels.hpp"
 #include "arithmetic/kernels/rational_kernel.hpp"
+#include "arithmetic/kernels/rational_mp_kernels.hpp"
 #ifdef MK_WITH_CGAL
 #include "arithmetic/kernels/cgal_kernel.hpp"
 #endif
 #include "core/boolean_op.hpp"
 #include "core/to_output.hpp"
+#include "api/area.hpp"
 
 namespace mk {
 
 namespace {
 
-// The exact sum of many rationals, added pairwise in a balanced tree. Crossing points have
-// pairwise different denominators, so the sum's denominator grows with every term: adding
-// the terms one by one costs time quadratic in their number (minutes at 1e5 crossings),
-// the tree costs a logarithmic number of passes of GMP's subquadratic arithmetic.
-// Consumes the terms.
-mpq_class sum_balanced(std::vector<mpq_class>& terms) {
-  if (terms.empty()) return 0;
-  for (std::size_t width = 1; width < terms.size(); width *= 2) {
-    for (std::size_t i = 0; i + width < terms.size(); i += 2 * width) terms[i] += terms[i + width];
-  }
-  return std::move(terms[0]);
+std::string point_text(const Point& p) {
+  char buf[64];
+  char* end = buf;
+  *end++ = '(';
+  end = std::to_chars(end, buf + sizeof buf, p.x == 0 ? 0.0 : p.x).ptr;
+  *end++ = ' ';
+  end = std::to_chars(end, buf + sizeof buf, p.y == 0 ? 0.0 : p.y).ptr;
+  *end++ = ')';
+  return std::string(buf, end);
+}
+
+// The core names crossing edges by ring and vertex indices; the end points make them easy to
+// find in the input.
+std::string crossing_message(const CrossingEdges& e, const Polygon& p) {
+  const auto edge = [&](const RingEdge& x) {
+    const Ring& ring = p.rings.at(static_cast<std::size_t>(x.ring));
+    return "ring " + std::to_string(x.ring) + "'s edge from vertex " + std::to_string(x.from) + " " +
+           point_text(ring.at(static_cast<std::size_t>(x.from))) + " to vertex " + std::to_string(x.to) + " " +
+           point_text(ring.at(static_cast<std::size_t>(x.to)));
+  };
+  return std::string("polygon ") + (e.polygon() == 0 ? "A" : "B") + ": " + edge(e.first()) + " crosses " +
+         edge(e.second()) + "; the edges of a polygon may touch but must not cross";
 }
 
 template <Kernel K>
@@ -45,50 +61,32 @@ BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
   auto ka = to_kernel_polygon<K>(a);
   auto kb = to_kernel_polygon<K>(b);
   const auto t0 = std::chrono::steady_clock::now();
-  const BooleanResult<K> r = boolean_op<K>(ka, kb, opt);
+  BooleanResult<K> r;
+  try {
+    r = boolean_op<K>(ka, kb, opt);
+  } catch (const CrossingEdges& e) {
+    throw CrossingEdges(e.polygon(), e.first(), e.second(), crossing_message(e, e.polygon() == 0 ? a : b));
+  }
   const auto t1 = std::chrono::steady_clock::now();
   BooleanOutput out;
-  out.output = to_output<K, ExactKernel>(r);
+  out.output = to_output<K, ExactKernel>(r, o.exact_coordinates);
   out.stats.kernel = std::string(K::name);
   out.stats.op_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count();
   out.stats.vertices_in = r.stats.vertices_in;
   out.stats.crossings = r.stats.crossings;
   out.stats.vertices_out = r.stats.vertices_out;
-  if (o.area && !r.unbounded) {
-    // Shoelace per area cycle, islands adding and holes subtracting.
+  if (!r.unbounded) {
     if constexpr (K::is_exact) {
-      std::vector<mpq_class> terms;
-      std::vector<mpq_class> cycle_areas;
-      for (const auto& c : out.output.irreducible) {
-        if (c.vertices.size() < 3) continue;
-        terms.clear();
-        const std::size_t n = c.vertices.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          const std::size_t j = (i + 1) % n;
-          const mpq_class xi(c.exact[2 * i]), yi(c.exact[2 * i + 1]), xj(c.exact[2 * j]), yj(c.exact[2 * j + 1]);
-          terms.push_back(xi * yj - xj * yi);
-        }
-        mpq_class a2 = sum_balanced(terms);
-        a2 = abs(a2) / 2;
-        cycle_areas.push_back(c.type == PolygonType::island ? a2 : mpq_class(-a2));
+      if (o.area_exact) {
+        const mpq_class exact = *exact_area(r);
+        out.stats.area_exact = exact.get_str();
+        out.stats.area = nearest_double(exact);
       }
-      const mpq_class total = sum_balanced(cycle_areas);
-      out.stats.area_exact = total.get_str();
-      out.stats.area = RationalKernel::to_nearest(total);
-    } else {
-      double total = 0;
-      for (const auto& c : out.output.irreducible) {
-        if (c.vertices.size() < 3) continue;
-        double twice = 0;
-        const std::size_t n = c.vertices.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          const auto& p = c.vertices[i];
-          const auto& q = c.vertices[(i + 1) % n];
-          twice += p.x * q.y - q.x * p.y;
-        }
-        total += (c.type == PolygonType::island ? 0.5 : -0.5) * std::abs(twice);
-      }
-      out.stats.area = total;
+    }
+    if (o.area && !out.stats.area) out.stats.area = rounded_area(r);
+    if (out.stats.area) {
+      *out.stats.area += 0.0;  // never -0
+      out.stats.area_beyond_double = std::isinf(*out.stats.area);
     }
   }
   return out;
@@ -97,7 +95,8 @@ BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
 }  // namespace
 
 std::vector<std::string_view> kernel_names() {
-  return {ExactKernel::name, RationalKernel::name, AdaptiveKernel::name, IntervalKernel::name,
+  return {ExactKernel::name,      RationalKernel::name,  RationalMpKernel::name, RationalCppKernel::name,
+          AdaptiveKernel::name,   IntervalKernel::name,
 #ifdef MK_WITH_CGAL
           CgalKernel::name,
 #endif
@@ -106,12 +105,21 @@ std::vector<std::string_view> kernel_names() {
 
 std::string_view default_kernel() { return ExactKernel::name; }
 
-bool is_exact_kernel(std::string_view name) { return name == RationalKernel::name || name == ExactKernel::name; }
+bool is_exact_kernel(std::string_view name) {
+  return name == RationalKernel::name || name == RationalMpKernel::name || name == RationalCppKernel::name ||
+         name == ExactKernel::name;
+}
+
+bool is_number_type_variant(std::string_view name) {
+  return name == RationalMpKernel::name || name == RationalCppKernel::name;
+}
 
 BooleanOutput compute(const Polygon& a, const Polygon& b, const BooleanOptions& options) {
   const std::string_view name = options.kernel.empty() ? default_kernel() : std::string_view(options.kernel);
   if (name == ExactKernel::name) return run<ExactKernel>(a, b, options);
   if (name == RationalKernel::name) return run<RationalKernel>(a, b, options);
+  if (name == RationalMpKernel::name) return run<RationalMpKernel>(a, b, options);
+  if (name == RationalCppKernel::name) return run<RationalCppKernel>(a, b, options);
   if (name == AdaptiveKernel::name) return run<AdaptiveKernel>(a, b, options);
   if (name == IntervalKernel::name) return run<IntervalKernel>(a, b, options);
 #ifdef MK_WITH_CGAL

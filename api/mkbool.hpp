@@ -22,6 +22,9 @@ std::vector<std::string_view> kernel_names();
 // The kernel used when none is named: the fastest exact kernel built.
 std::string_view default_kernel();
 bool is_exact_kernel(std::string_view name);
+// Kernels that repeat another with a different number type (rational-mp, rational-cpp: the
+// rational kernel over Boost.Multiprecision's rationals): the same results, another cost.
+bool is_number_type_variant(std::string_view name);
 
 struct BooleanOptions {
   Operation op = Operation::intersection;
@@ -29,7 +32,11 @@ struct BooleanOptions {
   std::string kernel;  // empty: default_kernel()
   bool sorted_ef = false;  // the paper's sorted EF table instead of the hash table
   bool all_pairs = false;  // the paper's all-pairs intersection search
-  bool area = true;        // compute BooleanStats::area and area_exact
+  bool area = true;        // BooleanStats::area: the area rounded to the nearest double
+  bool area_exact = false;  // BooleanStats::area_exact (exact kernels): costs more than the
+                            // operation on results with many crossing points
+  // Output::irreducible[i].exact: the exact coordinates as "p/q" strings (exact kernels).
+  bool exact_coordinates = false;
   // Threads for the phases that run in parallel (candidate pairs, crossings, classification,
   // the two polygons' preparation); 0: every core. Results are the same, bit for bit, on
   // any number of threads.
@@ -42,11 +49,14 @@ struct BooleanStats {
   std::size_t vertices_in = 0;
   std::size_t crossings = 0;
   std::size_t vertices_out = 0;
-  // Area of the result (regular part), rounded; exact kernels also give it as a reduced
-  // rational "p/q" or integer "p". Empty when unbounded or not asked for
-  // (BooleanOptions::area).
+  // Area of the result (regular part), correctly rounded to the nearest double; exact
+  // kernels also give it as a reduced rational "p/q" or integer "p". Empty when unbounded
+  // or not asked for (BooleanOptions::area, area_exact). An area larger than the largest
+  // double (coordinates beyond about 1.3e154 can make one) is +infinity, as IEEE rounding
+  // gives it, and area_beyond_double says so; area_exact still holds it exactly. Never NaN.
   std::optional<double> area;
   std::optional<std::string> area_exact;
+  bool area_beyond_double = false;
 };
 
 struct BooleanOutput {

@@ -62,7 +62,7 @@ void run(const mk::bench::Workload& w, mk::Operation op, int repeat, unsigned th
     const mk::BooleanResult<K> res = mk::boolean_op<K>(a, b, options, hook);
     const Clock::time_point done = Clock::now();
     record("boolean_op", std::chrono::duration<double, std::milli>(done - start).count());
-    const std::vector<int> parent = mk::inclusion_parents(res.arrangement, res.cycles, threads);
+    const std::vector<int> parent = mk::inclusion_parents(res.arrangement, res.cycles);
     const Clock::time_point assembled = Clock::now();
     record("assembly", std::chrono::duration<double, std::milli>(assembled - done).count());
     const mk::Output out = mk::to_output<K, mk::ExactKernel>(res);

@@ -11,13 +11,18 @@ struct BatchOptions {
   std::string input;   // a JSON Lines file, or `-` for standard input
   std::string kernel;  // empty: mk::default_kernel()
   bool regular = true;
+  // Compute each line's "area_exact" (a line's own "area_exact": false leaves it out too):
+  // on results with many crossing points it costs more than the operation.
+  bool area_exact = true;
   std::string output;  // empty: standard output
 };
 
 // Each non-blank input line is an object with "id" (any JSON value, echoed), "op"
 // (intersection, union, difference, symdifference or xor), "a_wkt" and "b_wkt"; other
-// members are ignored. Each gives one output line, in input order: id, op, kernel,
-// result_wkt, area, area_exact, valid, op_ns, line (1-based input line), and error when the
+// members are ignored, except "area_exact": false, which leaves that line's exact area out.
+// Each gives one output line, in input order: id, op, kernel, result_wkt, area (null beyond
+// the largest double), area_beyond_double, area_exact, valid, op_ns, line (1-based input
+// line), and error when the
 // case failed; a failed case never stops the batch. Returns the number of failed cases.
 // Throws mk::InvalidInput when the batch file cannot be read, mk::cli::OutputError when the
 // output cannot be written (the output file is then left untouched).

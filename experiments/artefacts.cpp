@@ -23,6 +23,7 @@
 #include "api/mkbool.hpp"
 #include "core/error.hpp"
 #include "experiments/generators.hpp"
+#include "experiments/peer_verdict.hpp"
 #include "experiments/verdict.hpp"
 #include "io/native_json.hpp"
 #include "io/svg.hpp"
@@ -160,6 +161,10 @@ void write_file(const fs::path& path, const std::string& text) {
 
 CaseSpec spec_of(const ResultRow& r) { return {r.generator, r.variant, parse_params(r.params), r.seed}; }
 
+// Every regression case a sweep writes says how it becomes a test.
+const std::string kKeepAsTest =
+    "to keep it as a test: copy this file to tests/regression/cases/ (tests/regression replays every case there)";
+
 std::string run_suffix(const ResultRow& r) { return "_" + r.op + (r.regular ? "" : "_nonregular"); }
 
 // Which failures to picture first: the worst, and among valid outputs those whose area
@@ -169,7 +174,9 @@ int severity(const ResultRow& r) {
     case Verdict::crash: return 0;
     case Verdict::timeout: return 1;
     case Verdict::invalid_output: return 2;
-    case Verdict::error: return 3;
+    case Verdict::error:
+    case Verdict::exception: return 3;
+    case Verdict::wrong: return 4;
     default: return r.area_error && *r.area_error > 1e-12 ? 4 : 5;
   }
 }
@@ -218,7 +225,7 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
   std::vector<const ResultRow*> exact_failures;
   std::map<std::pair<std::string, std::string>, std::vector<const ResultRow*>> inexact;
   for (const auto& r : rows) {
-    if (r.verdict == Verdict::exact_match || r.verdict == Verdict::invalid_input) continue;
+    if (!is_failure(r.verdict)) continue;
     if (r.kernel == "reference" || is_exact_kernel(r.kernel)) exact_failures.push_back(&r);
     else inexact[{r.kernel, r.generator}].push_back(&r);
   }
@@ -271,7 +278,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
                                                     {"generator=" + r->generator + " variant=" + r->variant +
                                                          " params=" + r->params + " seed=" + std::to_string(r->seed),
                                                      "kernel=" + r->kernel + " verdict=" +
-                                                         std::string(verdict_name(r->verdict)) + " " + r->message}));
+                                                         std::string(verdict_name(r->verdict)) + " " + r->message,
+                                                     kKeepAsTest}));
             return;
           }
           const ExactResult ref = exact_reference(c.a, c.b, op, r->regular, false);
@@ -285,7 +293,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
           const bool rerun = r->kernel != "reference" && r->verdict != Verdict::crash && r->verdict != Verdict::timeout;
           if (rerun) {
             try {
-              kernel_out = compute(c.a, c.b, BooleanOptions{op, r->regular, r->kernel}).output;
+              kernel_out = is_peer(r->kernel) ? peer_as_output(run_peer_on_case(r->kernel, c, op))
+                                              : compute(c.a, c.b, BooleanOptions{op, r->regular, r->kernel}).output;
             } catch (const std::exception& e) {
               title += " (" + std::string(e.what()).substr(0, 80) + ")";
             }
@@ -322,7 +331,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
                                                       {"RationalKernel violates an exact identity: " + *what,
                                                        "found measuring " + r->kernel + " on generator=" + r->generator +
                                                            " variant=" + r->variant + " params=" + r->params +
-                                                           " seed=" + std::to_string(r->seed) + " op=" + r->op}));
+                                                           " seed=" + std::to_string(r->seed) + " op=" + r->op,
+                                                       kKeepAsTest}));
               return;
             }
           }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
@@ -38,6 +39,10 @@ struct Case {
   CaseSpec spec;
   Polygon a;
   Polygon b;
+  // External cases (reported, --cases): the inputs' OGC structure exactly as given, which
+  // the peer libraries take; generated cases get theirs from the rings' nesting (ogc.hpp).
+  std::optional<MultiPolygon> a_ogc;
+  std::optional<MultiPolygon> b_ogc;
   std::size_t size() const;  // input vertices of A and B together
 };
 

@@ -4,6 +4,8 @@
 #include "experiments/generators.hpp"
 
 #include <charconv>
+
+#include "experiments/external_cases.hpp"
 #include <stdexcept>
 
 namespace mk::experiments {
@@ -99,6 +101,8 @@ const std::vector<Generator>& generators() {
       {"kettner_grid", "Kettner et al.'s orient2d grids as polygon pairs (p + (i, j) ulps)", {"shared_edge_a", "shared_edge_b", "chain_a"}, &kettner_grid},
       {"blob", "two smooth curves of n vertices crossing twice", {"smooth"}, &blob},
       {"star", "two random star polygons of n vertices, about n^2/400 crossings", {"random"}, &star},
+      {"reported", "inputs of public issue reports of polygon Boolean libraries (experiments/reported/*.jsonl; variant = case id)", {}, &reported},
+      {"cases", "the user's own pairs (run --cases FILE.jsonl; variant = case id)", {}, &cases},
   };
   return all;
 }
@@ -115,10 +119,13 @@ const Generator& find_generator(std::string_view name) {
   throw std::invalid_argument("unknown generator '" + std::string(name) + "' (known: " + known + ")");
 }
 
+bool is_external_generator(std::string_view name) { return name == "reported" || name == "cases"; }
+
 Case make_case(const CaseSpec& spec) {
+  if (is_external_generator(spec.generator)) return make_external_case(spec);
   const Generator& g = find_generator(spec.generator);
   PolygonPair p = g.make(spec);
-  return {spec, std::move(p.a), std::move(p.b)};
+  return {spec, std::move(p.a), std::move(p.b), std::nullopt, std::nullopt};
 }
 
 namespace {
@@ -160,7 +167,10 @@ std::vector<CaseSpec> plan_sweep(const PlanOptions& options) {
     const auto add = [&](std::string_view variant, std::vector<std::pair<std::string, std::int64_t>> params) {
       out.push_back({std::string(g.name), std::string(variant), std::move(params), mix_seed(options.base_seed, g.name, index++)});
     };
-    if (g.name == "kettner_grid") {
+    if (g.name == "reported" || g.name == "cases") {
+      // Every case of the corpus at every level; `cases` only when the user gave a file.
+      for (const auto& c : g.name == "reported" ? reported_corpus() : user_cases()) add(c.id, {});
+    } else if (g.name == "kettner_grid") {
       for (const auto v : g.variants) {
         for (int i = 0; i < 256; i += sz.kettner_stride) {
           for (int j = 0; j < 256; j += sz.kettner_stride) add(v, {{"i", i}, {"j", j}});

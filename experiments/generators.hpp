@@ -50,6 +50,10 @@ const Generator& find_generator(std::string_view name);  // throws std::invalid_
 // Generates a case from its spec.
 Case make_case(const CaseSpec& spec);
 
+// Generators whose cases come from outside (reported, cases): their inputs may lie outside
+// mkbool's domain, which is then a `refused` verdict, not a generator bug.
+bool is_external_generator(std::string_view name);
+
 struct PlanOptions {
   SweepLevel level = SweepLevel::normal;
   int seeds = 0;  // random instances per configuration; 0: the level's default

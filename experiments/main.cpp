@@ -1,10 +1,14 @@
 // mkbool-experiment: run robustness sweeps (generators x kernels x operations x regular x
 // seeds), merge shards, write the report, and reproduce single cases. [MK89 §3.3]
-// Preconditions: none; bad arguments exit with status 2 and a message.
+// Preconditions: none; every bad argument exits with status 2 and one line naming it.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -12,14 +16,20 @@
 #include <map>
 #include <thread>
 
+#include <gmp.h>
+
 #include "api/mkbool.hpp"
+#include "experiments/arguments.hpp"
 #include "experiments/artefacts.hpp"
+#include "experiments/external_cases.hpp"
 #include "experiments/generators.hpp"
+#include "experiments/peers/peers.hpp"
 #include "experiments/report.hpp"
 #include "experiments/runner.hpp"
 
 namespace fs = std::filesystem;
 using namespace mk::experiments;
+using namespace mk::experiments::arguments;
 
 namespace {
 
@@ -32,7 +42,9 @@ struct RunArgs {
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   double timeout = 0;
   std::size_t memory_mb = 0;
-  bool no_artefacts = false, no_report = false, no_plots = false;
+  bool no_artefacts = false, no_report = false, no_plots = false, no_peers = false;
+  std::size_t peer_every = 0;
+  std::string cases;
   std::string out;
 };
 
@@ -65,6 +77,47 @@ std::size_t default_memory_mb(int jobs) {
   return static_cast<std::size_t>(0.8 * mb / std::max(1, jobs));
 }
 
+std::string first_line_of(const std::string& command) {
+  std::string out;
+  if (FILE* f = ::popen(command.c_str(), "r")) {
+    char buf[512];
+    if (std::fgets(buf, sizeof buf, f) != nullptr) out = buf;
+    ::pclose(f);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out;
+}
+
+// What the sweep ran on: the commit, the libraries' versions, the compiler and the CPU.
+std::vector<std::string> environment_lines() {
+  std::vector<std::string> out;
+  const std::string src = MK_EXPERIMENTS_SOURCE_DIR;
+  std::string commit = first_line_of("git -C '" + src + "' rev-parse --short=12 HEAD 2>/dev/null");
+  if (commit.empty()) commit = "unknown (not a git checkout)";
+  else if (!first_line_of("git -C '" + src + "' status --porcelain --untracked-files=no 2>/dev/null").empty()) commit += " (with uncommitted changes)";
+  out.push_back("commit: " + commit);
+  std::string libs = std::string("GMP ") + gmp_version;
+  for (const auto& v : peer_versions()) libs += ", " + v;
+  out.push_back("libraries: " + libs);
+  out.push_back("compiler: " + std::string(
+#if defined(__clang__)
+      "clang "
+#elif defined(__GNUC__)
+      "GCC "
+#endif
+      __VERSION__));
+  std::ifstream cpu("/proc/cpuinfo");
+  std::string line, model = "unknown";
+  while (std::getline(cpu, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  out.push_back("cpu: " + model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads");
+  return out;
+}
+
 void print_counts(const std::vector<ResultRow>& rows) {
   std::map<std::string, std::map<std::string, std::size_t>> counts;
   for (const auto& r : rows) ++counts[r.kernel][std::string(verdict_name(r.verdict))];
@@ -81,6 +134,10 @@ int run_command(const RunArgs& a, const std::string& command_line) {
   po.seeds = a.seeds;
   po.base_seed = a.base_seed;
   po.generators = a.generators;
+  if (!a.cases.empty()) {
+    set_user_cases(a.cases);
+    if (po.generators.empty()) po.generators = {"cases"};
+  }
   const std::vector<CaseSpec> plan = plan_sweep(po);
 
   Shard shard;
@@ -93,15 +150,21 @@ int run_command(const RunArgs& a, const std::string& command_line) {
 
   RunOptions o;
   if (a.kernels.empty()) {
-    for (const auto k : mk::kernel_names()) o.kernels.emplace_back(k);
-  } else {
-    for (const auto& k : a.kernels) {
-      bool known = false;
-      for (const auto n : mk::kernel_names()) known = known || n == k;
-      if (!known) throw CLI::ValidationError("--kernels", "kernel '" + k + "' is not built into this library");
-      o.kernels.push_back(k);
+    // The number-type variants of `rational` (same results, several times its cost) only in
+    // the full sweep, so that the default sweep keeps its few minutes.
+    for (const auto k : mk::kernel_names()) {
+      if (a.full || !mk::is_number_type_variant(k)) o.kernels.emplace_back(k);
     }
+    if (!a.no_peers) {
+      for (const auto p : peer_names()) o.kernels.emplace_back(p);
+    }
+  } else {
+    o.kernels = a.kernels;  // checked while parsing (kernels and peers)
   }
+  // Peers run on every external case; on generated cases the default sweep samples them
+  // (every 4th case, inputs up to 2000 vertices), --full runs them all.
+  o.peer_every = a.peer_every > 0 ? a.peer_every : a.full ? 1 : 4;
+  o.peer_max_size = a.full ? 0 : 2000;
   o.jobs = std::max(1, a.jobs);
   o.timeout_seconds = a.timeout > 0 ? a.timeout : (a.quick ? 20 : a.full ? 300 : 60);
   o.memory_mb = a.memory_mb > 0 ? a.memory_mb : default_memory_mb(o.jobs);
@@ -134,10 +197,16 @@ int run_command(const RunArgs& a, const std::string& command_line) {
     if (!suffix.empty()) fs::rename(fs::path(a.out) / "artefacts.csv", fs::path(a.out) / ("artefacts" + suffix + ".csv"));
     std::cerr << "mkbool-experiment: " << n_art << " failure artefacts (pictures, regression cases) in "
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+    bool any_case = false;
     for (const auto& art : arts) {
       if (art.kind != Artefact::Kind::regression_case) continue;
       const bool core = art.path.find("inconsistency_") != std::string::npos;
       std::cerr << (core ? "  reference inconsistency: " : "  exact-kernel failure: ") << art.path << "\n";
+      any_case = true;
+    }
+    if (any_case) {
+      std::cerr << "  to keep them as tests: cp " << (fs::path(a.out) / "regression").string()
+                << "/*.wkt tests/regression/cases/ (tests/regression replays every case there)\n";
     }
   }
   {
@@ -151,7 +220,11 @@ int run_command(const RunArgs& a, const std::string& command_line) {
           << stats.rows << " runs in " << stats.seconds << " s wall time with " << o.jobs << " jobs on "
           << std::thread::hardware_concurrency() << " hardware threads; time limit " << o.timeout_seconds
           << " s per run\n"
+          << "peers: on every external case; on generated cases with index divisible by " << o.peer_every
+          << (o.peer_max_size > 0 ? " and at most " + std::to_string(o.peer_max_size) + " input vertices" : std::string())
+          << ", regular operations\n"
           << "finished: " << utc_now() << "\n";
+    for (const auto& l : environment_lines()) sweep << l << "\n";
   }
   std::cout << "verdicts:\n";
   print_counts(rows);
@@ -217,22 +290,27 @@ int merge_command(const std::vector<std::string>& dirs, std::string out, bool pl
   return 0;
 }
 
-int case_command(const CaseSpec& spec, const std::string& op_name, bool regular, const std::string& out) {
+int case_command(const CaseSpec& spec, const std::string& op_name, bool regular, const std::string& out, bool pictures) {
   const Case c = make_case(spec);
   const mk::Operation op = parse_operation(op_name);
   fs::create_directories(out);
-  const std::string stem = spec.stem() + "_" + op_name + (regular ? "" : "_nonregular");
+  // External cases are named by their id (a production case keeps its name as a test).
+  const std::string stem = (is_external_generator(spec.generator) ? spec.generator + "_" + spec.variant : spec.stem()) +
+                           "_" + op_name + (regular ? "" : "_nonregular");
   std::ofstream(fs::path(out) / (stem + ".wkt")) << regression_case_text(
       c.a, c.b, op, regular, {"generator=" + spec.generator + " variant=" + spec.variant + " params=" +
                                   spec.params_text() + " seed=" + std::to_string(spec.seed)});
   const ExactResult ref = exact_reference(c.a, c.b, op, regular, false);
   std::cout << (fs::path(out) / (stem + ".wkt")).string() << ": " << c.size() << " input vertices, exact result "
             << ref.cycles.size() << " polygons\n";
+  if (!pictures) return 0;
   for (const auto k : mk::kernel_names()) {
     std::string verdict, title = std::string(k) + ": ";
     std::optional<mk::Output> output;
     try {
-      output = mk::compute(c.a, c.b, mk::BooleanOptions{op, regular, std::string(k)}).output;
+      mk::BooleanOptions options{op, regular, std::string(k)};
+      options.exact_coordinates = true;  // assess() compares exact results exactly
+      output = mk::compute(c.a, c.b, options).output;
       const Assessment as = assess(*output, ref);
       verdict = std::string(verdict_name(as.verdict)) + (as.note.empty() ? "" : " (" + as.note + ")");
     } catch (const std::exception& e) {
@@ -257,14 +335,37 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "run a sweep, write DIR/results*.csv, failure artefacts and DIR/README.md");
   auto* quick = run->add_flag("--quick", ra.quick, "small sweep (under 2 minutes on 2 cores)");
   run->add_flag("--full", ra.full, "long sweep (hours; see experiments/README.md)")->excludes(quick);
-  run->add_option("--kernels", ra.kernels, "kernels to run (default: every kernel built)")->delimiter(',');
-  run->add_option("--generators", ra.generators, "generators to run (default: all; see `list`)")->delimiter(',');
-  run->add_option("--seeds", ra.seeds, "random instances per configuration (default: by level)")->check(CLI::PositiveNumber);
-  run->add_option("--seed", ra.base_seed, "base seed; every case seed derives from it")->capture_default_str();
-  run->add_option("--shard", ra.shard, "run only shard i of N (i/N, 0-based): every N-th case from i");
-  run->add_option("--jobs,-j", ra.jobs, "worker processes")->capture_default_str()->check(CLI::PositiveNumber);
-  run->add_option("--timeout", ra.timeout, "seconds per run before it counts as a timeout (default: 20 quick, 60, 300 full)");
-  run->add_option("--memory-mb", ra.memory_mb, "address-space limit per worker (default: 80% of RAM / jobs)");
+  const auto backend_check = accepted_by(
+      [](const std::string& k) {
+        if (!is_peer(k)) check_kernel(k);
+      },
+      "back end");
+  const auto generator_check = accepted_by([](const std::string& g) { find_generator(g); }, "generator");
+  run->add_option("--kernels,--backends", ra.kernels, "back ends to run: kernels and peers (default: every one built; rational-mp and rational-cpp only with --full)")
+      ->delimiter(',')
+      ->check(backend_check);
+  run->add_flag("--no-peers", ra.no_peers, "kernels only (no GEOS, Boost.Geometry, Clipper, CGAL)");
+  run->add_option("--peer-every", ra.peer_every, "run peers on every N-th generated case (default: 4; --full: 1)")
+      ->check(whole_number(1, 1'000'000, "a whole number from 1 to 1000000"));
+  run->add_option("--cases", ra.cases, "sweep your own pairs: JSON Lines of the batch format (id, op, a_wkt, b_wkt)")
+      ->check(CLI::ExistingFile);
+  run->add_option("--generators", ra.generators, "generators to run (default: all; see `list`)")
+      ->delimiter(',')
+      ->check(generator_check);
+  run->add_option("--seeds", ra.seeds, "random instances per configuration (default: by level)")
+      ->check(whole_number(1, 1'000'000, "a whole number of seeds from 1 to 1000000"));
+  run->add_option("--seed", ra.base_seed, "base seed; every case seed derives from it")
+      ->capture_default_str()
+      ->check(whole_number(0, UINT64_MAX, "a whole number from 0 to 2^64-1"));
+  run->add_option("--shard", ra.shard, "run only shard i of N (i/N, 0-based): every N-th case from i")
+      ->check(accepted_by([](const std::string& t) { parse_shard(t); }, "shard"));
+  run->add_option("--jobs,-j", ra.jobs, "worker processes")
+      ->capture_default_str()
+      ->check(whole_number(1, 1024, "a whole number of worker processes from 1 to 1024"));
+  run->add_option("--timeout", ra.timeout, "seconds per run before it counts as a timeout (default: 20 quick, 60, 300 full)")
+      ->check(positive_seconds());
+  run->add_option("--memory-mb", ra.memory_mb, "address-space limit per worker (default: 80% of RAM / jobs)")
+      ->check(whole_number(1, UINT64_MAX >> 20, "a whole number of megabytes, at least 1"));
   run->add_flag("--no-artefacts", ra.no_artefacts, "skip failure pictures and regression cases");
   run->add_flag("--no-report", ra.no_report, "skip the report");
   run->add_flag("--no-plots", ra.no_plots, "report without running the plot script");
@@ -287,18 +388,59 @@ int main(int argc, char** argv) {
   auto* list = app.add_subcommand("list", "list generators (with variants) and kernels");
 
   CaseSpec spec;
-  std::string case_params, case_op = "intersection", case_out = ".";
-  bool case_nonregular = false;
+  std::string case_params, case_op = "intersection", case_out = ".", case_file;
+  bool case_nonregular = false, case_no_pictures = false;
   auto* one = app.add_subcommand("case", "regenerate one case: regression case file and a picture per kernel");
-  one->add_option("--generator", spec.generator, "generator name")->required();
+  one->add_option("--generator", spec.generator, "generator name")->required()->check(generator_check);
   one->add_option("--variant", spec.variant, "variant name (CSV column variant)")->required();
   one->add_option("--params", case_params, "parameters as in the CSV, e.g. k=-3 or i=4;j=8");
-  one->add_option("--seed", spec.seed, "case seed (CSV column seed)")->required();
-  one->add_option("--op", case_op, "intersection, union, difference or xor")->capture_default_str();
+  one->add_option("--seed", spec.seed, "case seed (CSV column seed; any value for reported and cases)")
+      ->check(whole_number(0, UINT64_MAX, "a whole number from 0 to 2^64-1"));
+  one->add_option("--op", case_op, "intersection, union, difference or xor (or symdifference)")
+      ->capture_default_str()
+      ->check(accepted_by([](const std::string& op) { parse_operation(operation_argument(op)); }, "operation"));
   one->add_flag("--nonregular", case_nonregular, "non-regular operation");
   one->add_option("-o,--out", case_out, "output directory")->capture_default_str();
+  one->add_option("--cases", case_file, "JSON Lines file of generator `cases` (the case is --variant ID)")->check(CLI::ExistingFile);
+  one->add_flag("--no-pictures", case_no_pictures, "write the regression case file only");
 
-  CLI11_PARSE(app, argc, argv);
+  // CLI11's own exit codes (104-106) and multi-line messages become exit 2 and one line.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string first = argv[1];
+    bool known = false;
+    for (const auto* sub : app.get_subcommands({})) known = known || sub->get_name() == first;
+    if (!known) return usage_error("unknown command '" + first + "' (run, merge, report, list or case)");
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    return usage_error(e.what());
+  }
+  // Checks that need more than one argument, or a look at the file system.
+  if (*one) {
+    const auto& variants = find_generator(spec.generator).variants;
+    // External generators' variants are case ids, checked when the case is looked up.
+    if (!is_external_generator(spec.generator) &&
+        std::find(variants.begin(), variants.end(), spec.variant) == variants.end()) {
+      std::string known;
+      for (const auto v : variants) known += (known.empty() ? "" : ", ") + std::string(v);
+      return usage_error("--variant: generator " + spec.generator + " has no variant '" + spec.variant +
+                         "' (it has: " + known + ")");
+    }
+    try {
+      spec.params = parse_params(case_params);
+    } catch (const std::invalid_argument& e) {
+      return usage_error(std::string("--params: ") + e.what());
+    }
+    case_op = operation_argument(case_op);
+  }
+  if (*report && !has_results(report_dir)) {
+    return usage_error(report_dir + " holds no results*.csv; run `mkbool-experiment run -o " + report_dir + "` first");
+  }
+  if (*merge && std::none_of(merge_dirs.begin(), merge_dirs.end(), has_results)) {
+    return usage_error("none of the directories holds results*.csv files to merge");
+  }
   try {
     if (*run) return run_command(ra, command_line);
     if (*merge) return merge_command(merge_dirs, merge_out, !merge_no_plots);
@@ -314,12 +456,14 @@ int main(int argc, char** argv) {
       }
       std::cout << "kernels:";
       for (const auto k : mk::kernel_names()) std::cout << " " << k << (mk::is_exact_kernel(k) ? " (exact)" : "");
-      std::cout << "\n";
+      std::cout << "\npeers:";
+      for (const auto p : peer_names()) std::cout << " " << p;
+      std::cout << "\nreported corpus: " << reported_corpus().size() << " cases in " << reported_dir() << "\n";
       return 0;
     }
     if (*one) {
-      spec.params = parse_params(case_params);
-      return case_command(spec, case_op, !case_nonregular, case_out);
+      if (!case_file.empty()) set_user_cases(case_file);
+      return case_command(spec, case_op, !case_nonregular, case_out, !case_no_pictures);
     }
   } catch (const CLI::Error& e) {
     return app.exit(e);

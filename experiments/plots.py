@@ -1,6 +1,6 @@
 # Plots of a robustness sweep from DIR/results*.csv: failure rate against perturbation size
-# (ulp_perturbed), time against input size (blob, star), and verdict maps of the
-# kettner_grid cases. [MK89 §3.3] [KMPSY08 §4]
+# (ulp_perturbed), time against input size (blob, star), verdict maps of the kettner_grid
+# cases, and failure rates of every back end per generator; rates carry 95% Wilson bars. [MK89 §3.3] [KMPSY08 §4]
 # Preconditions: run with Debian's /usr/bin/python3 and python3-matplotlib; DIR is a sweep
 # output directory. Writes DIR/plots/*.png; prints nothing on success.
 import csv
@@ -54,6 +54,91 @@ def is_wrong(r):
     return r["verdict"] == "valid_different" and r["area_error"] != "" and float(r["area_error"]) > 1e-12
 
 
+def wilson(k, n, z=1.959963984540054):
+    """95% Wilson score interval of k in n, as (low, high) fractions (statistics.hpp)."""
+    if n == 0:
+        return 0.0, 1.0
+    p = k / n
+    denom = 1 + z * z / n
+    centre = (p + z * z / (2 * n)) / denom
+    half = z * ((p * (1 - p) / n + z * z / (4 * n * n)) ** 0.5) / denom
+    return (0.0 if k == 0 else max(0.0, centre - half)), (1.0 if k == n else min(1.0, centre + half))
+
+
+def error_bars(ks, ns):
+    """Asymmetric error bars (in %) of the rates k/n."""
+    lows, highs = [], []
+    for k, n in zip(ks, ns):
+        lo, hi = wilson(k, n)
+        lows.append(100.0 * (k / n - lo))
+        highs.append(100.0 * (hi - k / n))
+    return [lows, highs]
+
+
+def fails(r):
+    """A failed run on the report's one scale for kernels and peers (report_library.cpp)."""
+    v = r["verdict"]
+    if v in ("wrong", "invalid_output", "exception", "crash", "timeout"):
+        return True
+    if v == "error":
+        return not r["message"].startswith("InvalidInput")
+    if v == "valid_different" and r["symdiff_area"] != "" and r.get("rounding_bound", "") != "":
+        return float(r["symdiff_area"]) > float(r["rounding_bound"])
+    return False
+
+
+def library_failures(rows, out):
+    """Failure rate of every back end (kernels and peers) per generator, with Wilson bars."""
+    runs = [r for r in rows if r["kernel"] != "reference"]
+    if not any(r["kernel"] in ("geos", "boost", "clipper", "cgal_epeck") for r in runs):
+        return
+    backends, generators = [], []
+    for r in runs:
+        if r["kernel"] not in backends:
+            backends.append(r["kernel"])
+        if r["generator"] not in generators:
+            generators.append(r["generator"])
+    counts = defaultdict(lambda: [0, 0])
+    for r in runs:
+        c = counts[(r["generator"], r["kernel"])]
+        c[1] += 1
+        c[0] += 1 if fails(r) else 0
+    # Small multiples: one panel per generator, one bar per back end (same order and colour
+    # in every panel), each with its 95% Wilson interval.
+    cols = 4
+    rows_n = (len(generators) + cols - 1) // cols
+    fig, axes = plt.subplots(rows_n, cols, figsize=(3.4 * cols, 2.9 * rows_n), squeeze=False)
+    cmap = plt.get_cmap("tab10")
+    colours = [cmap(i % 10) for i in range(len(backends))]
+    for index, gen in enumerate(generators):
+        ax = axes[index // cols][index % cols]
+        xs, rates, ks, ns, cs = [], [], [], [], []
+        for b_index, backend in enumerate(backends):
+            k, n = counts[(gen, backend)]
+            if n == 0:
+                continue
+            xs.append(b_index)
+            rates.append(100.0 * k / n)
+            ks.append(k)
+            ns.append(n)
+            cs.append(colours[b_index])
+        ax.bar(xs, rates, color=cs, yerr=error_bars(ks, ns), capsize=2, error_kw={"elinewidth": 0.8})
+        ax.set_title(gen, fontsize=10)
+        ax.set_xticks(range(len(backends)))
+        ax.set_xticklabels(backends, rotation=60, ha="right", fontsize=7)
+        ax.set_ylim(0, max(5.0, max((r + e for r, e in zip(rates, error_bars(ks, ns)[1])), default=0) * 1.1))
+        ax.grid(axis="y", alpha=0.3)
+        if index % cols == 0:
+            ax.set_ylabel("failed runs (%)")
+    for index in range(len(generators), rows_n * cols):
+        axes[index // cols][index % cols].axis("off")
+    fig.suptitle("Failed runs per generator and back end (wrong, invalid output, exception, crash, timeout); "
+                 "bars: 95% Wilson intervals", fontsize=11)
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
+    fig.savefig(os.path.join(out, "library_failures.png"), dpi=110)
+    plt.close(fig)
+
+
 def failure_vs_ulps(rows, kernels, out):
     runs = [r for r in rows if r["generator"] == "ulp_perturbed" and r["kernel"] != "reference"]
     if not runs:
@@ -76,9 +161,10 @@ def failure_vs_ulps(rows, kernels, out):
             ks = sorted(by_k)
             marker, line = STYLES[n % len(STYLES)]
             # Kernels that decide alike overlap exactly: distinct markers and dashes keep
-            # each visible.
-            ax.plot(ks, [100.0 * by_k[k][0] / by_k[k][1] for k in ks], marker=marker, linestyle=line,
-                    markersize=9 - n, alpha=0.8, label=kernel)
+            # each visible; bars are 95% Wilson intervals.
+            ax.errorbar(ks, [100.0 * by_k[k][0] / by_k[k][1] for k in ks],
+                        yerr=error_bars([by_k[k][0] for k in ks], [by_k[k][1] for k in ks]), marker=marker,
+                        linestyle=line, markersize=max(3, 9 - n), alpha=0.8, capsize=2, label=kernel)
         ax.set_title(title)
         ax.set_xlabel("k: ulps the vertex is moved off the edge (0: exactly on it)")
         ax.grid(alpha=0.3)
@@ -169,6 +255,7 @@ def main():
     failure_vs_ulps(rows, kernels, out)
     time_vs_size(rows, kernels, out)
     kettner_maps(rows, kernels, out)
+    library_failures(rows, out)
 
 
 if __name__ == "__main__":

@@ -15,6 +15,9 @@
 #include <sstream>
 
 #include "api/mkbool.hpp"
+#include "experiments/peers/peers.hpp"
+#include "experiments/report_library.hpp"
+#include "experiments/statistics.hpp"
 
 #ifndef MK_EXPERIMENTS_SOURCE_DIR
 #define MK_EXPERIMENTS_SOURCE_DIR "experiments"
@@ -40,11 +43,8 @@ std::string sci(double v) {
   return buf;
 }
 
-std::string rate_cell(std::size_t count, std::size_t total) {
-  if (count == 0) return "0";
-  const double pct = 100.0 * static_cast<double>(count) / static_cast<double>(total);
-  return (pct < 0.1 ? std::string("<0.1") : fixed(pct, pct < 10 ? 1 : 0)) + "% (" + std::to_string(count) + ")";
-}
+// Every rate with its count and 95% Wilson interval (statistics.hpp).
+std::string rate_cell(std::size_t count, std::size_t total) { return rate_with_interval(count, total); }
 
 std::size_t total(const Counts& c) {
   std::size_t n = 0;
@@ -68,7 +68,8 @@ std::vector<std::string> kernel_order(const std::vector<ResultRow>& rows) {
     if (present.count(std::string(k))) out.push_back(std::string(k));
   }
   for (const auto& k : present) {
-    if (std::find(out.begin(), out.end(), k) == out.end() && k != "reference") out.push_back(k);
+    // Peers have verdicts of their own: they appear in the library comparison (report_library.cpp).
+    if (std::find(out.begin(), out.end(), k) == out.end() && k != "reference" && !is_peer(k)) out.push_back(k);
   }
   if (present.count("reference")) out.push_back("reference");
   return out;
@@ -140,7 +141,10 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
   verdict_table(md, kernels, by_kernel, "kernel");
   std::size_t exact_failures = 0;
   for (const auto& r : rows) {
-    if ((is_exact_name(r.kernel) || r.kernel == "reference") && r.verdict != Verdict::exact_match) ++exact_failures;
+    if ((is_exact_name(r.kernel) || r.kernel == "reference") && r.verdict != Verdict::exact_match &&
+        r.verdict != Verdict::refused) {
+      ++exact_failures;
+    }
   }
   std::string exact_list;
   for (const auto& k : kernels) {
@@ -153,6 +157,8 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
        << " runs did not match the exact result. Each is a bug; the cases are written as regression cases "
           "below.**\n\n";
   }
+
+  md << library_report(rows);
 
   std::set<std::uint64_t> inconsistent_cases;
   std::size_t inconsistent_runs = 0;
@@ -270,6 +276,8 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
     }
     md << "\n";
   }
+
+  fallback_section(md, rows);
 
   md << "## Area error of `valid_different` results\n\n"
         "Area of the symmetric difference between the kernel's output and the exact result, relative to the "

@@ -24,8 +24,8 @@ struct ResultRow {
   std::uint64_t size = 0;  // input vertices of A and B together
   std::string op;          // intersection, union, difference, xor
   bool regular = true;
-  std::string kernel;  // a name from mk::kernel_names(), or "reference" when the
-                       // reference itself failed on this (case, op, regular)
+  std::string kernel;  // a name from mk::kernel_names() or peer_names(), or "reference"
+                       // when the reference itself failed on this (case, op, regular)
   Verdict verdict = Verdict::exact_match;
   std::optional<double> area_error;
   std::optional<double> symdiff_area;
@@ -33,10 +33,21 @@ struct ResultRow {
   std::optional<std::int64_t> op_ns;
   std::optional<std::int64_t> predicate_calls;
   std::optional<std::int64_t> predicate_fallbacks;
+  // The calls each stage decided, "stage=n;stage=n" in stage order (predicates_counters.hpp),
+  // stages that decided none left out; empty without counters.
+  std::string predicate_stages;
   std::optional<std::int64_t> vertices_in;
   std::optional<std::int64_t> crossings;
   std::optional<std::int64_t> vertices_out;
   std::string message;  // error text or the first difference found
+  // The rounding bound on symdiff_area for rounding_only (peer_verdict.hpp), where measured.
+  std::optional<double> rounding_bound;
+  // Exact kernels: whether the result agrees exactly (area and empty symmetric difference)
+  // with CGAL Epeck's on the same run; empty where CGAL did not run or gave no result.
+  std::optional<bool> oracle_agrees;
+  // Peers: GEOS's isValid and the exact OGC check of the result (ogc.hpp).
+  std::optional<bool> geos_valid;
+  std::optional<bool> exact_valid;
 };
 
 // The schema, in column order.

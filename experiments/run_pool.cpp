@@ -333,6 +333,7 @@ std::vector<ResultRow> run_sweep(const std::vector<IndexedCase>& cases, const Ru
   std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<ResultRow> rows;
   for (auto& k : keyed) rows.push_back(std::move(k.second));
+  fill_oracle_agreement(rows);
   if (stats != nullptr) {
     stats->cases = cases.size();
     stats->rows = rows.size();

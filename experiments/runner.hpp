@@ -17,7 +17,8 @@
 namespace mk::experiments {
 
 struct RunOptions {
-  std::vector<std::string> kernels;  // names from mk::kernel_names()
+  // Back ends: names from mk::kernel_names() and from peer_names() (peers/peers.hpp).
+  std::vector<std::string> kernels;
   std::vector<Operation> ops{Operation::intersection, Operation::union_, Operation::difference,
                              Operation::symmetric_difference};
   std::vector<bool> regular{true, false};
@@ -30,6 +31,11 @@ struct RunOptions {
   // this many input vertices (a partly independent check of the rational kernel), the
   // hash table and sweep above it.
   std::size_t paper_reference_limit = 600;
+  // Peers run on the regular operations of generated cases whose plan index is a multiple
+  // of peer_every and whose size is at most peer_max_size (0: any), and on every external
+  // case (reported, --cases): the default sweep samples them, --full runs them all.
+  std::size_t peer_every = 1;
+  std::size_t peer_max_size = 0;
   // Tests only: called in the worker before each kernel run, e.g. to crash or hang there.
   std::function<void(const std::string& kernel, const CaseSpec& spec)> fault_injection;
 };
@@ -57,6 +63,13 @@ void run_case(const IndexedCase& c, const RunOptions& options, std::size_t first
               const std::function<void(std::size_t)>& on_generated = {});
 
 std::size_t slot_count(const RunOptions& options);
+
+// The oracle_agrees column: for each (case, op, regular) with a cgal_epeck run, every exact
+// kernel's row says whether its result agrees exactly with CGAL Epeck's. The kernel's output
+// equals the reference vertex for vertex (exact_match) and the cgal_epeck verdict compares the
+// reference with CGAL exactly (exact area, empty symmetric difference), so agreement is
+// exact_match and exact_area; a disagreement carries the independent point check's finding.
+void fill_oracle_agreement(std::vector<ResultRow>& rows);
 
 struct SweepStats {
   std::size_t cases = 0;

@@ -28,10 +28,22 @@ enum class Verdict : unsigned char {
   timeout,          // the run exceeded the time limit and was killed
   crash,            // the process running the case died (signal)
   invalid_input,    // the reference rejected the input: a generator bug, not a kernel's
+  // Verdicts of peer libraries (peer_verdict.hpp), whose results are never exact vertex for
+  // vertex, and of runs on external cases (reported, --cases):
+  exact_area,     // the exact area equals the exact result's and their symmetric difference is empty
+  rounding_only,  // symmetric difference with the exact result within the rounding bound
+  wrong,          // beyond it
+  exception,      // the library threw or reported an error
+  refused,        // mkbool refused the external input (outside its domain, e.g. self-crossing)
+  unjudged,       // no exact result to compare with (mkbool refused the input); output valid
+  unsupported,    // the back end cannot express the input (a hole-type polygon for OGC libraries)
 };
 inline constexpr Verdict all_verdicts[] = {Verdict::exact_match, Verdict::valid_different, Verdict::invalid_output,
                                            Verdict::error,       Verdict::timeout,         Verdict::crash,
-                                           Verdict::invalid_input};
+                                           Verdict::invalid_input, Verdict::refused};
+inline constexpr Verdict peer_verdicts[] = {Verdict::exact_area, Verdict::rounding_only, Verdict::wrong,
+                                            Verdict::invalid_output, Verdict::exception, Verdict::timeout,
+                                            Verdict::crash, Verdict::unjudged, Verdict::unsupported};
 
 std::string_view verdict_name(Verdict v);
 std::optional<Verdict> parse_verdict(std::string_view name);
@@ -79,6 +91,11 @@ PolygonType ccw_type_of(const ExactResult& reference);
 // (counterclockwise rings have type `ccw_type`). `why` receives the reason when not.
 bool is_valid_output(const Output& output, PolygonType ccw_type, std::string* why = nullptr);
 
+// Whether regions overlap at a vertex where rings meet (turning around it, the region is
+// entered twice in a row), or two edges leave a vertex along one ray. Rings must have the
+// region on their left when `region_left` (counterclockwise islands), on their right otherwise.
+bool have_overlapping_sectors(const Output& output, bool region_left);
+
 // Exact area of the symmetric difference of two results given as area cycles (rings of
 // 3+ vertices, nesting decides the region as in the paper's polygon model; unbounded
 // results are hole-type). `infinite` when exactly one of them is unbounded; empty when
@@ -101,6 +118,11 @@ std::optional<mpq_class> parity_area(const std::vector<std::vector<RationalPoint
 // area(x and x) = parity area of x, and area(x xor y) = area(x) + area(y) - 2 area(x and y).
 // Returns a description of the first one violated, or empty (also when not checkable).
 std::optional<std::string> violated_identity(const Polygon& x, const Polygon& y);
+
+// Twice the signed area of a ring (shoelace, exact), and the area of a bounded result from
+// its typed cycles (islands add, holes subtract; cycles of fewer than 3 vertices add nothing).
+mpq_class twice_signed_area(const std::vector<RationalPoint>& ring);
+mpq_class typed_area(const std::vector<ExactCycle>& cycles);
 
 // The output's cycles with exact coordinates (parsed "p/q" when present, else the doubles).
 std::vector<ExactCycle> exact_cycles(const Output& output);

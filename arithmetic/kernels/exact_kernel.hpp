@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "arithmetic/adaptive.hpp"
+#include "arithmetic/crossing_rounding.hpp"
 #include "arithmetic/interval_filter.hpp"
 #include "arithmetic/kernels/rational_kernel.hpp"
 #include "arithmetic/rounding_guard.hpp"
@@ -125,8 +126,11 @@ struct ExactKernel {
     if (!a.is_crossing && !b.is_crossing && !c.is_crossing) return orient2d(a.a0, b.a0, c.a0);
     return RationalKernel::orient2d(exact(a), exact(b), exact(c));
   }
+  // Nearest doubles: from exact expansions when the magnitudes allow (almost always), else
+  // from the exact rational.
   static mk::Point approx(const Vertex& v) {
     if (!v.is_crossing) return v.a0;
+    if (mk::Point p; nearest_crossing(v.a0, v.a1, v.b0, v.b1, p)) return p;
     const RationalPoint e = exact(v);
     return {RationalKernel::to_nearest(e.x), RationalKernel::to_nearest(e.y)};
   }

@@ -228,7 +228,10 @@ TEST(InclusionParents, ShellIsTheInnermostIslandAroundEachHole) {
         const QPoint m{(rings[h][0].x + rings[h][1].x) / 2, (rings[h][0].y + rings[h][1].y) / 2};
         int expected = -1;
         for (std::size_t c = 0; c < r.cycles.size(); ++c) {
-          if (r.cycles[c].type != PolygonType::island || rings[c].size() < 3 || !ring_contains(rings[c], m)) continue;
+          if (r.cycles[c].type != PolygonType::island || rings[c].size() < 3 ||
+              locate(std::vector<QRing>{rings[c]}, PolygonType::island, m) != Location::inside) {
+            continue;
+          }
           if (expected < 0 || area(c) < area(static_cast<std::size_t>(expected))) expected = static_cast<int>(c);
         }
         EXPECT_EQ(parent[h], expected) << "round " << round << " op " << operation_name(op) << " hole " << h;

@@ -1,0 +1,106 @@
+// What the exact result costs after the operation: BM_OutputCost/<workload>/<n> runs the
+// exact kernel's operation and then each step that turns its result into what a user
+// reads, timing them apart: rounding, the exact validity check and the assembly into
+// polygons with holes (mk::to_output), writing WKT, the correctly rounded area, and the
+// exact area as a reduced rational with its decimal text.
+// [BRIEF §6a] (output: exact inside, doubles or rationals outside) [issue 17's bars]
+// Preconditions: built in Release.
+//
+// Counters (seconds per iteration, and ratios to the operation):
+//   op_s          the operation (boolean_op, the exact kernel)
+//   output_s      rounding, validity check, assembly (to_output without exact strings)
+//   wkt_s         write_wkt of the assembled result
+//   area_s        the area rounded to the nearest double (filtered sum)
+//   area_exact_s  the exact area and its decimal text ("p/q")
+//   write_ratio   (output_s + wkt_s) / op_s: the bar is 0.25
+//   stats_ratio   area_exact_s / op_s: the bar is 2
+// The benchmark's own time is op_s + output_s + wkt_s: what the command's user waits for
+// after reading the input, without --stats.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "api/area.hpp"
+#include "arithmetic/kernels/exact_kernel.hpp"
+#include "bench/workloads.hpp"
+#include "core/boolean_op.hpp"
+#include "core/to_output.hpp"
+#include "io/wkt.hpp"
+
+namespace mk::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
+  const Workload w = make_workload(kind, static_cast<std::size_t>(state.range(0)));
+  Options opt;
+  opt.op = Operation::intersection;
+  double op = 0, output = 0, wkt = 0, area = 0, area_exact = 0;
+  std::size_t digits = 0;
+  for (auto _ : state) {
+    const double waited_before = op + output + wkt;
+    auto t = Clock::now();
+    const BooleanResult<ExactKernel> r = boolean_op<ExactKernel>(w.a, w.b, opt);
+    op += seconds_since(t);
+    t = Clock::now();
+    const Output out = to_output<ExactKernel, ExactKernel>(r, false);
+    output += seconds_since(t);
+    t = Clock::now();
+    const std::string text = write_wkt(out);
+    wkt += seconds_since(t);
+    benchmark::DoNotOptimize(text.data());
+    t = Clock::now();
+    const auto rounded = rounded_area(r);
+    area += seconds_since(t);
+    benchmark::DoNotOptimize(rounded);
+    t = Clock::now();
+    const std::string exact = exact_area(r)->get_str();
+    area_exact += seconds_since(t);
+    digits = exact.size();
+    state.SetIterationTime(op + output + wkt - waited_before);
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["op_s"] = op / n;
+  state.counters["output_s"] = output / n;
+  state.counters["wkt_s"] = wkt / n;
+  state.counters["area_s"] = area / n;
+  state.counters["area_exact_s"] = area_exact / n;
+  state.counters["write_ratio"] = (output + wkt) / op;
+  state.counters["stats_ratio"] = area_exact / op;
+  state.counters["area_exact_chars"] = static_cast<double>(digits);
+  state.counters["vertices_in"] = static_cast<double>(w.vertices());
+}
+
+void register_all() {
+  struct Case {
+    WorkloadKind kind;
+    long n;
+    int iterations;
+  };
+  // Large cases run once per repetition: the exact area of star 1e4 alone takes seconds.
+  for (const Case c : {Case{WorkloadKind::blob, 100'000, 5}, Case{WorkloadKind::blob, 1'000'000, 1},
+                       Case{WorkloadKind::star, 1'000, 5}, Case{WorkloadKind::star, 10'000, 1}}) {
+    const std::string name = "BM_OutputCost/" + std::string(workload_name(c.kind));
+    benchmark::RegisterBenchmark(name.c_str(), [k = c.kind](benchmark::State& s) { BM_OutputCost(s, k); })
+        ->Arg(c.n)
+        ->Iterations(c.iterations)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime();
+  }
+}
+
+}  // namespace
+}  // namespace mk::bench
+
+int main(int argc, char** argv) {
+  mk::bench::register_all();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
