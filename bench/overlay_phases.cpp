@@ -2,6 +2,8 @@
 // goes, step by step (the trace hook between the steps of boolean_op), then the assembly of
 // the result into polygons with holes and the rest of the conversion to mk::Output. Prints
 // one JSON line with the median milliseconds of each phase over REPEAT runs (default 5).
+// overlay_phases --wkt WORKLOAD N A.wkt B.wkt writes the workload's two inputs as WKT
+// MULTIPOLYGONs instead, for timing the command on them.
 // [MK89 §3.1] (the steps) [BRIEF §6]
 // Preconditions: built in Release; KERNEL is exact (default), rational or double.
 #include <algorithm>
@@ -65,7 +67,7 @@ void run(const mk::bench::Workload& w, mk::Operation op, int repeat, unsigned th
     const std::vector<int> parent = mk::inclusion_parents(res.arrangement, res.cycles);
     const Clock::time_point assembled = Clock::now();
     record("assembly", std::chrono::duration<double, std::milli>(assembled - done).count());
-    const mk::Output out = mk::to_output<K, mk::ExactKernel>(res);
+    const mk::Output out = mk::to_output<K, mk::ExactKernel>(res, false);  // as mk::compute by default
     record("to_output", std::chrono::duration<double, std::milli>(Clock::now() - assembled).count());
     crossings = res.stats.crossings;
     out_vertices = res.stats.vertices_out;
@@ -87,15 +89,51 @@ void run(const mk::bench::Workload& w, mk::Operation op, int repeat, unsigned th
   std::printf("}\n");
 }
 
+// Writes mp as one WKT MULTIPOLYGON (rings closed, shortest round-trip doubles).
+bool write_wkt(const mk::MultiPolygon& mp, const char* path) {
+  std::FILE* f = std::fopen(path, "w");
+  if (!f) return false;
+  const auto ring = [&](const mk::Ring& r) {
+    std::fputc('(', f);
+    for (std::size_t i = 0; i <= r.size(); ++i) {
+      const mk::Point& q = r[i % r.size()];
+      std::fprintf(f, "%s%.17g %.17g", i ? "," : "", q.x, q.y);
+    }
+    std::fputc(')', f);
+  };
+  std::fputs("MULTIPOLYGON(", f);
+  for (std::size_t p = 0; p < mp.size(); ++p) {
+    std::fputs(p ? ",(" : "(", f);
+    ring(mp[p].shell);
+    for (const auto& h : mp[p].holes) std::fputc(',', f), ring(h);
+    std::fputc(')', f);
+  }
+  std::fputs(")\n", f);
+  return std::fclose(f) == 0;
+}
+
 [[noreturn]] void usage(const std::string& message) {
   std::cerr << "overlay_phases: " << message
-            << "\nusage: overlay_phases WORKLOAD N [OP] [KERNEL] [REPEAT] [THREADS]\n";
+            << "\nusage: overlay_phases WORKLOAD N [OP] [KERNEL] [REPEAT] [THREADS]\n"
+            << "       overlay_phases --wkt WORKLOAD N A.wkt B.wkt\n";
   std::exit(2);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 6 && std::string(argv[1]) == "--wkt") {
+    const auto kind = mk::bench::workload_named(argv[2]);
+    if (!kind) usage(std::string("unknown workload '") + argv[2] + "'");
+    const std::size_t n = std::strtoull(argv[3], nullptr, 10);
+    if (n < 1) usage("N must be positive");
+    const mk::bench::Workload w = mk::bench::make_workload(*kind, n);
+    if (!write_wkt(w.a_ogc, argv[4]) || !write_wkt(w.b_ogc, argv[5])) {
+      std::cerr << "overlay_phases: cannot write " << argv[4] << " or " << argv[5] << "\n";
+      return 1;
+    }
+    return 0;
+  }
   if (argc < 3) usage("WORKLOAD and N are required");
   const auto kind = mk::bench::workload_named(argv[1]);
   if (!kind) usage(std::string("unknown workload '") + argv[1] + "'");

@@ -103,4 +103,46 @@ std::string PeerOverlay<Clipper>::version() {
 
 template class PeerOverlay<Clipper>;
 
+// The same operation with its result as a PolyTree: Clipper then assigns every hole to its
+// outer ring, as GEOS and Boost.Geometry return polygons with their holes.
+template <>
+struct PeerOverlay<ClipperPolyTree>::Impl {
+  double scale;
+  ClipperLib::Paths a, b;
+};
+
+template <>
+PeerOverlay<ClipperPolyTree>::PeerOverlay(const MultiPolygon& a, const MultiPolygon& b) {
+  const double scale = choose_scale(a, b);
+  impl_ = std::make_unique<Impl>(Impl{scale, to_paths(a, scale), to_paths(b, scale)});
+}
+
+template <>
+PeerOverlay<ClipperPolyTree>::~PeerOverlay() = default;
+
+template <>
+OverlayResult PeerOverlay<ClipperPolyTree>::run(Operation op) const {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(impl_->a, ClipperLib::ptSubject, true);
+  clipper.AddPaths(impl_->b, ClipperLib::ptClip, true);
+  ClipperLib::PolyTree tree;
+  if (!clipper.Execute(clip_type(op), tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero)) {
+    throw std::runtime_error("Clipper: Execute failed");
+  }
+  OverlayResult out;
+  for (const ClipperLib::PolyNode* node = tree.GetFirst(); node; node = node->GetNext()) {
+    out.area += ClipperLib::Area(node->Contour);  // holes run opposite to their outer rings
+    out.vertices += node->Contour.size();
+  }
+  out.area /= impl_->scale * impl_->scale;
+  return out;
+}
+
+template <>
+std::string PeerOverlay<ClipperPolyTree>::version() {
+  return CLIPPER_VERSION;
+}
+
+template class PeerOverlay<ClipperPolyTree>;
+
 }  // namespace mk::bench
