@@ -49,6 +49,17 @@ ClipperLib::Paths to_paths(const MultiPolygon& mp, double scale) {
   return paths;
 }
 
+// Both inputs, scaled and rounded once, outside the timed region (both Clipper runners).
+struct ClipperInputs {
+  double scale;
+  ClipperLib::Paths a, b;
+};
+
+ClipperInputs clipper_inputs(const MultiPolygon& a, const MultiPolygon& b) {
+  const double scale = choose_scale(a, b);
+  return {scale, to_paths(a, scale), to_paths(b, scale)};
+}
+
 ClipperLib::ClipType clip_type(Operation op) {
   switch (op) {
     case Operation::intersection: return ClipperLib::ctIntersection;
@@ -62,16 +73,11 @@ ClipperLib::ClipType clip_type(Operation op) {
 }  // namespace
 
 template <>
-struct PeerOverlay<Clipper>::Impl {
-  double scale;
-  ClipperLib::Paths a, b;
-};
+struct PeerOverlay<Clipper>::Impl : ClipperInputs {};
 
 template <>
-PeerOverlay<Clipper>::PeerOverlay(const MultiPolygon& a, const MultiPolygon& b) {
-  const double scale = choose_scale(a, b);
-  impl_ = std::make_unique<Impl>(Impl{scale, to_paths(a, scale), to_paths(b, scale)});
-}
+PeerOverlay<Clipper>::PeerOverlay(const MultiPolygon& a, const MultiPolygon& b)
+    : impl_(std::make_unique<Impl>(Impl{clipper_inputs(a, b)})) {}
 
 template <>
 PeerOverlay<Clipper>::~PeerOverlay() = default;
@@ -106,16 +112,11 @@ template class PeerOverlay<Clipper>;
 // The same operation with its result as a PolyTree: Clipper then assigns every hole to its
 // outer ring, as GEOS and Boost.Geometry return polygons with their holes.
 template <>
-struct PeerOverlay<ClipperPolyTree>::Impl {
-  double scale;
-  ClipperLib::Paths a, b;
-};
+struct PeerOverlay<ClipperPolyTree>::Impl : ClipperInputs {};
 
 template <>
-PeerOverlay<ClipperPolyTree>::PeerOverlay(const MultiPolygon& a, const MultiPolygon& b) {
-  const double scale = choose_scale(a, b);
-  impl_ = std::make_unique<Impl>(Impl{scale, to_paths(a, scale), to_paths(b, scale)});
-}
+PeerOverlay<ClipperPolyTree>::PeerOverlay(const MultiPolygon& a, const MultiPolygon& b)
+    : impl_(std::make_unique<Impl>(Impl{clipper_inputs(a, b)})) {}
 
 template <>
 PeerOverlay<ClipperPolyTree>::~PeerOverlay() = default;
