@@ -45,7 +45,7 @@ std::string crossing_message(const CrossingEdges& e, const Polygon& p) {
 template <Kernel K>
 BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
   const Options opt{o.op, o.regular, o.sorted_ef ? EfOrganisation::sorted : EfOrganisation::hash,
-                    o.all_pairs ? PairSearch::all_pairs : PairSearch::sweep};
+                    o.all_pairs ? PairSearch::all_pairs : PairSearch::sweep, o.threads};
   validate_coordinates(a, "A");
   validate_coordinates(b, "B");
   auto ka = to_kernel_polygon<K>(a);

@@ -43,6 +43,10 @@ struct BooleanOptions {
   // accepts (Clipper's meanings). Regular output only. Unset: the paper's domain (rings may
   // touch, never cross; regions by nesting), exactly as without this option.
   std::optional<FillRule> fill_rule = std::nullopt;
+  // Threads for the phases that run in parallel (candidate pairs, crossings, classification,
+  // the two polygons' preparation); 0: every core. Results are the same, bit for bit, on
+  // any number of threads.
+  unsigned threads = 0;
 };
 
 struct BooleanStats {

@@ -5,7 +5,7 @@
 // three steps (so that it crosses itself a few times per vertex), intersected with itself by a fill rule, mkbool against Clipper. Issue 13's speed bars.
 // Workloads: `circles`, n random 32-gons of radius 0.5-2 in a 100 x 100 square (seed 1);
 // `grid`, a k x k grid of unit squares sharing every edge (n = k^2), the coverage case.
-// [BRIEF §6] paper-notes.md deviation 16
+// [BRIEF §6] paper-notes.md deviation 17
 // Preconditions: built with GEOS (MK_HAVE_GEOS) and Clipper (MK_HAVE_CLIPPER) when found.
 #include <benchmark/benchmark.h>
 

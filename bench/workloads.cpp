@@ -124,6 +124,85 @@ Workload checkerboard(std::size_t n) {
   return finish(WorkloadKind::checkerboard, n, 0, checkerboard_grid(n, 0), checkerboard_grid(n, 0.5));
 }
 
+Workload stripes(std::size_t n) {
+  const double width = 4 * static_cast<double>(n);
+  MultiPolygon a, b;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double y = 4 * static_cast<double>(i);
+    a.push_back({square(0, y, width, y + 1), {}});
+    b.push_back({square(0, y + 2, width, y + 3), {}});
+  }
+  return finish(WorkloadKind::stripes, n, 0, std::move(a), std::move(b));
+}
+
+Workload checkerboard_shared(std::size_t n) {
+  // The light cells (i + j odd) of the grid of checkerboard_grid(n, 0), n of them.
+  const auto side = static_cast<std::size_t>(std::ceil(std::sqrt(2.0 * static_cast<double>(n))));
+  MultiPolygon light;
+  for (std::size_t j = 0; j < side + 1 && light.size() < n; ++j) {
+    for (std::size_t i = 1 - j % 2; i < side && light.size() < n; i += 2) {
+      const double x = static_cast<double>(i);
+      const double y = static_cast<double>(j);
+      light.push_back({square(x, y, x + 1, y + 1), {}});
+    }
+  }
+  return finish(WorkloadKind::checkerboard_shared, n, 0, checkerboard_grid(n, 0), std::move(light));
+}
+
+Workload checkerboard_offset(std::size_t n) {
+  MultiPolygon b = checkerboard_grid(n, 0.5);
+  for (OgcPolygon& p : b) {
+    for (Point& q : p.shell) q.y += 0.5;
+  }
+  return finish(WorkloadKind::checkerboard_offset, n, 0, checkerboard_grid(n, 0), std::move(b));
+}
+
+Workload many_holes(std::size_t n) {
+  const auto k = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const auto plate = [&](double d) {
+    const double side = static_cast<double>(k);
+    OgcPolygon p{square(d, d, side + d, side + d), {}};
+    p.holes.reserve(k * k);
+    for (std::size_t j = 0; j < k; ++j) {
+      for (std::size_t i = 0; i < k; ++i) {
+        const double x = static_cast<double>(i) + d;
+        const double y = static_cast<double>(j) + d;
+        Ring hole = square(x + 0.2, y + 0.2, x + 0.6, y + 0.6);
+        std::reverse(hole.begin(), hole.end());
+        p.holes.push_back(std::move(hole));
+      }
+    }
+    return MultiPolygon{std::move(p)};
+  };
+  return finish(WorkloadKind::many_holes, n, 0, plate(0), plate(0.2));
+}
+
+Workload long_spikes(std::size_t n) {
+  // A: a saw over [0, w] x [0, h] whose teeth alternate between x = 0 and x = w, closed along
+  // x = -1; B: a smooth curve inside the box that every tooth crosses.
+  const std::size_t teeth = std::max<std::size_t>(1, n / 4);
+  const double w = 2 * static_cast<double>(teeth);
+  const double h = 2 * static_cast<double>(teeth);
+  Ring saw;
+  saw.reserve(2 * teeth + 3);
+  saw.push_back({-1, 0});
+  for (std::size_t i = 0; i < teeth; ++i) {
+    saw.push_back({0, 2 * static_cast<double>(i)});
+    saw.push_back({w, 2 * static_cast<double>(i) + 1});
+  }
+  saw.push_back({0, h});
+  saw.push_back({-1, h});
+  const std::size_t m = std::max<std::size_t>(3, n / 2);
+  Ring curve;
+  curve.reserve(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const double t = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(m);
+    const double r = 0.4 * (1 + 0.1 * std::sin(5 * t));
+    curve.push_back({w / 2 + r * w * std::cos(t), h / 2 + r * h * std::sin(t)});
+  }
+  return finish(WorkloadKind::long_spikes, n, 0, {{std::move(saw), {}}}, {{std::move(curve), {}}});
+}
+
 Workload nested_squares(std::size_t n) {
   MultiPolygon a, b;
   for (std::size_t k = 0; k < n; ++k) {
@@ -138,7 +217,12 @@ Workload make_workload(WorkloadKind kind, std::size_t n) {
   switch (kind) {
     case WorkloadKind::blob: return blob(n);
     case WorkloadKind::star: return star(n);
+    case WorkloadKind::stripes: return stripes(n);
     case WorkloadKind::checkerboard: return checkerboard(n);
+    case WorkloadKind::checkerboard_shared: return checkerboard_shared(n);
+    case WorkloadKind::checkerboard_offset: return checkerboard_offset(n);
+    case WorkloadKind::many_holes: return many_holes(n);
+    case WorkloadKind::long_spikes: return long_spikes(n);
     case WorkloadKind::nested_squares: return nested_squares(n);
   }
   throw std::invalid_argument("unknown workload");

@@ -91,6 +91,7 @@ void run_command(const CommandOptions& o) {
   options.regular = o.regular;
   options.kernel = o.kernel;
   options.area = o.stats;  // the area is only reported in --stats
+  options.threads = o.threads;
   options.area_exact = o.stats;
   options.exact_coordinates = o.format == OutputFormat::native_json;  // only the native format writes them
   options.fill_rule = o.fill_rule;

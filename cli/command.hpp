@@ -27,6 +27,7 @@ struct CommandOptions {
   bool stats = false;
   // Reads A and B by a fill rule (any rings: crossing, overlapping); regular output only.
   std::optional<FillRule> fill_rule;
+  unsigned threads = 0;  // 0: every core
 };
 
 // Runs the operation and writes its output. Throws mk::cli::UsageError (two standard

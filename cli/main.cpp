@@ -21,7 +21,7 @@ namespace {
 
 constexpr const char* usage_lines =
     "usage: mkbool OP A B [--kernel K] [--non-regular] [--a-type island|hole] [--b-type island|hole]\n"
-    "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats]\n"
+    "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats] [--threads N]\n"
     "                     [--fill-rule evenodd|nonzero|positive|negative|union]\n"
     "       mkbool union-all|intersection-all|make-valid INPUT [--fill-rule R] [--kernel K]\n"
     "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats]\n"
@@ -192,6 +192,8 @@ int run_command_form(int argc, char** argv) {
   app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
   app.add_flag("--stats", o.stats, "print one JSON line of statistics on standard error");
   app.add_option("--fill-rule", rule, fill_rule_help)->check(CLI::IsMember(fill_rules()))->excludes("--non-regular");
+  app.add_option("--threads", o.threads, "threads for the operation (default 0: every core; the result is the same)")
+      ->check(CLI::Range(0u, 1024u));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

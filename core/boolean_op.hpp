@@ -14,6 +14,7 @@
 #include "core/arrangement.hpp"
 #include "core/edge_fragment_table.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/prepare.hpp"
 #include "core/step1_orientation.hpp"
 #include "core/step2_vertex_rings.hpp"
@@ -31,6 +32,9 @@ struct Options {
   bool regular = true;
   EfOrganisation ef = EfOrganisation::hash;
   PairSearch pair_search = PairSearch::sweep;
+  // Threads for the phases that run in parallel; 0: every core. The result is the same,
+  // bit for bit, on any number of threads.
+  unsigned threads = 0;
 };
 
 struct Stats {
@@ -77,15 +81,16 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   };
   BooleanResult<K> res;
   Arrangement<K>& arr = res.arrangement;
-  arr = prepare<K>(a, b, opt.pair_search);  // input: point identities, vertex-complete rings
+  const unsigned threads = resolve_threads(opt.threads);
+  arr = prepare<K>(a, b, opt.pair_search, threads);  // input: point identities, vertex-complete rings
   hook(Step::prepared, arr);
-  normalize_orientations(arr, opt.op);  // step 1
+  normalize_orientations(arr, opt.op, threads);  // step 1
   hook(Step::oriented, arr);
   build_vertex_rings(arr);  // step 2
   hook(Step::vertex_rings, arr);
-  insert_intersections(arr, opt.pair_search);  // step 3
+  insert_intersections(arr, opt.pair_search, threads);  // step 3
   hook(Step::intersections, arr);
-  Incidence inc = classify_fragments(arr);  // step 4
+  Incidence inc = classify_fragments(arr, threads);  // step 4
   hook(Step::classified, arr);
   Table ef = make_ef_table<Table>(arr);
   const std::vector<int> isolated_points = select_into_ef(arr, inc, opt.op, opt.regular, ef);  // step 5

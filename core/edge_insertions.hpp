@@ -17,6 +17,14 @@ namespace mk {
 class EdgeInsertions {
  public:
   void add(int edge, int vertex) { list_.emplace_back(edge, vertex); }
+  // Adds every pair of `other` (collected by another part of a search).
+  void append(EdgeInsertions&& other) {
+    if (list_.empty()) {
+      list_ = std::move(other.list_);
+    } else {
+      list_.insert(list_.end(), other.list_.begin(), other.list_.end());
+    }
+  }
   bool empty() const { return list_.empty(); }
   std::size_t size() const { return list_.size(); }
 

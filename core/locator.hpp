@@ -1,8 +1,9 @@
-// Winding numbers of a set of edges at points just beside an edge, answered through buckets
-// of x-ranks: each query tests only the edges whose x-range contains the query's x.
-// [MK89 §4.3] (locating one vertex per ring without a scan of the other polygon)
-// Preconditions: point ids follow lexicographic order; x_rank[id] is the rank of the
-// point's x among the distinct x values.
+// Winding numbers of a set of non-crossing edges at points just beside an edge: one query by
+// a scan of the edges, many queries in one plane sweep. [MK89 §4.3] (locating one vertex per
+// ring without a scan of the other polygon) [MK89 §3.2] (point location by a ray)
+// Preconditions: point ids follow lexicographic order; x_rank[id] is the rank of the point's
+// x among the distinct x values; the edges meet only at shared endpoints or coincide as sets
+// (the edges of one vertex-complete polygon).
 #pragma once
 
 #include <algorithm>
@@ -14,89 +15,279 @@
 
 namespace mk {
 
+// A point just `side` of v -> t near v (see vertical_ray_crossing).
+struct LocatorQuery {
+  int v = -1;
+  int t = -1;
+  Side side = Side::left;
+};
+
+namespace detail {
+
+// A sequence of ints kept in an order that a caller-given comparison defines (the order of
+// edges crossing a sweep line), in sorted blocks of at most 2 * kBlock: a balanced tree's
+// O(log n) comparisons per operation, without a node allocation per element and with
+// neighbours next to each other in memory.
+class BlockedOrder {
+ public:
+  // Inserts e (not present); returns the element after it, or -1.
+  template <class Less>
+  int insert(int e, Less&& less) {
+    if (blocks_.empty()) {
+      blocks_.push_back({e});
+      finger_ = {0, 0};
+      return -1;
+    }
+    auto [b, i] = find(e, less);
+    if (b == blocks_.size()) {  // after everything: at the end of the last block
+      b = blocks_.size() - 1;
+      i = blocks_[b].size();
+    }
+    auto& block = blocks_[b];
+    block.insert(block.begin() + static_cast<std::ptrdiff_t>(i), e);
+    int after = -1;
+    if (i + 1 < block.size()) {
+      after = block[i + 1];
+    } else if (b + 1 < blocks_.size()) {
+      after = blocks_[b + 1].front();
+    }
+    finger_ = {b, i};
+    if (block.size() > 2 * kBlock) {
+      std::vector<int> upper(block.begin() + kBlock, block.end());
+      block.resize(kBlock);
+      blocks_.insert(blocks_.begin() + static_cast<std::ptrdiff_t>(b) + 1, std::move(upper));
+      if (i >= kBlock) finger_ = {b + 1, i - kBlock};
+    }
+    return after;
+  }
+
+  // Removes e, which is present.
+  template <class Less>
+  void erase(int e, Less&& less) {
+    const auto [b, i] = find(e, less);
+    auto& block = blocks_[b];
+    block.erase(block.begin() + static_cast<std::ptrdiff_t>(i));
+    finger_ = {b, i};
+    if (block.empty()) {
+      blocks_.erase(blocks_.begin() + static_cast<std::ptrdiff_t>(b));
+      finger_ = {0, 0};
+    }
+  }
+
+  // The first element x with !less(x, key), or -1.
+  template <class Key, class Less>
+  int lower_bound(const Key& key, Less&& less) {
+    const auto [b, i] = find(key, less);
+    if (b == blocks_.size()) return -1;
+    finger_ = {b, i};
+    return i < blocks_[b].size() ? blocks_[b][i] : (b + 1 < blocks_.size() ? blocks_[b + 1].front() : -1);
+  }
+
+ private:
+  static constexpr std::size_t kBlock = 64;
+  static constexpr std::size_t kNear = 4;  // steps tried from the finger before a search
+
+  struct Place {
+    std::size_t block, index;
+  };
+
+  // The lower bound of key as (block, index): the first block whose last element is not
+  // before key, and the position in it (blocks_.size() when every element is before key).
+  // Sweeps move little between operations, so the place of the last operation is tried
+  // first, a few steps either way, before a binary search.
+  template <class Key, class Less>
+  Place find(const Key& key, Less& less) const {
+    if (finger_.block < blocks_.size()) {
+      const auto& block = blocks_[finger_.block];
+      std::size_t i = std::min(finger_.index, block.size());
+      std::size_t steps = 0;
+      while (i < block.size() && steps < kNear && less(block[i], key)) ++i, ++steps;
+      while (i > 0 && steps < kNear && !less(block[i - 1], key)) --i, ++steps;
+      const bool before_ok = i > 0 ? less(block[i - 1], key)
+                                   : (finger_.block == 0 || less(blocks_[finger_.block - 1].back(), key));
+      const bool at_ok = i < block.size() ? !less(block[i], key) : finger_.block + 1 == blocks_.size();
+      if (before_ok && at_ok) return {i < block.size() ? finger_.block : blocks_.size(), i};
+    }
+    std::size_t lo = 0, hi = blocks_.size();
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (less(blocks_[mid].back(), key)) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
+    if (lo == blocks_.size()) return {lo, 0};
+    const auto& block = blocks_[lo];
+    return {lo, static_cast<std::size_t>(std::lower_bound(block.begin(), block.end(), key, less) - block.begin())};
+  }
+
+  std::vector<std::vector<int>> blocks_;
+  Place finger_{0, 0};
+};
+
+}  // namespace detail
+
 template <Kernel K>
 class WindingLocator {
  public:
   // Edges src -> dst as point ids, viewed, not copied: they must outlive the locator.
-  // `queries` is how many queries are expected: when they are few, each scans the edges
-  // directly (as cheap as indexing them once).
-  WindingLocator(const Arrangement<K>& arr, std::span<const Edge> edges, std::size_t queries)
+  // `queries` is how many single queries are expected; it is kept for callers of the
+  // one-query interface, which scans the edges: batches go through windings().
+  WindingLocator(const Arrangement<K>& arr, std::span<const Edge> edges, std::size_t queries = 0)
       : arr_(arr), edges_(edges) {
-    if (queries <= kDirectScanQueries) {
-      direct_ = true;
-      return;
-    }
-    const int ranks = arr.x_rank.empty() ? 1 : arr.x_rank.back() + 1;
-    buckets_ = std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(ranks), edges_.size() / 2 + 1));
-    ranks_ = ranks;
-    begin_.assign(buckets_ + 1, 0);
-    for (const Edge& e : edges_) {
-      const auto [lo, hi] = bucket_span(e.src, e.dst);
-      for (std::size_t k = lo; k <= hi; ++k) ++begin_[k + 1];
-    }
-    for (std::size_t k = 1; k < begin_.size(); ++k) begin_[k] += begin_[k - 1];
-    items_.resize(begin_.back());
-    std::vector<std::size_t> fill(begin_.begin(), begin_.end() - 1);
-    for (int e = 0; e < static_cast<int>(edges_.size()); ++e) {
-      const auto [lo, hi] = bucket_span(edges_[e].src, edges_[e].dst);
-      for (std::size_t k = lo; k <= hi; ++k) items_[fill[k]++] = e;
-    }
+    (void)queries;
   }
 
-  // Winding number at the point just `side` of v -> t near v (see vertical_ray_crossing).
+  // Winding number at the point just `side` of v -> t near v: a scan of every edge.
   int winding(int v, int t, Side side) const {
     int wind = 0;
-    for_each_crossing(v, t, side, [&](int c) { wind += c; });
+    scan(v, t, side, [&](int c) { wind += c; });
     return wind;
   }
 
-  // Number of edges crossing the ray (their parity counts the cycles around the point).
+  // Number of edges crossing the vertical ray from that point (their parity counts the
+  // cycles around it): a scan of every edge.
   int crossings(int v, int t, Side side) const {
     int count = 0;
-    for_each_crossing(v, t, side, [&](int c) { count += c != 0; });
+    scan(v, t, side, [&](int c) { count += c != 0; });
     return count;
   }
 
+  // winding() of every query, in O((edges + queries) log edges) for the batch.
+  std::vector<int> windings(std::span<const LocatorQuery> queries) const {
+    return answer(queries, false);
+  }
+  // crossings() of every query, or any count of the same parity (a ray other than the
+  // vertical one may cross another number of edges, never of another parity).
+  std::vector<int> crossing_parities(std::span<const LocatorQuery> queries) const {
+    return answer(queries, true);
+  }
+
  private:
-  static constexpr std::size_t kDirectScanQueries = 4;
+  // Up to this many queries, each scans the edges: a sweep costs a few scans.
+  static constexpr std::size_t kScanQueries = 8;
 
   // Calls f(vertical_ray_crossing(...)) for every edge whose x-range contains v's x.
   template <class F>
-  void for_each_crossing(int v, int t, Side side, F&& f) const {
+  void scan(int v, int t, Side side, F&& f) const {
     const int r = arr_.x_rank[v];
-    const auto visit = [&](int e) {
-      const Edge& edge = edges_[static_cast<std::size_t>(e)];
-      const int a = edge.src;
-      const int b = edge.dst;
-      const int ra = arr_.x_rank[a];
-      const int rb = arr_.x_rank[b];
-      if (r < std::min(ra, rb) || r > std::max(ra, rb)) return;
-      f(vertical_ray_crossing<K>(arr_.points[v], arr_.points[t], side, arr_.points[a], arr_.points[b]));
-    };
-    if (direct_) {
-      for (int e = 0; e < static_cast<int>(edges_.size()); ++e) visit(e);
-      return;
+    for (const Edge& edge : edges_) {
+      const int ra = arr_.x_rank[edge.src];
+      const int rb = arr_.x_rank[edge.dst];
+      if (r < std::min(ra, rb) || r > std::max(ra, rb)) continue;
+      f(vertical_ray_crossing<K>(arr_.points[v], arr_.points[t], side, arr_.points[edge.src], arr_.points[edge.dst]));
     }
-    const std::size_t k = bucket(r);
-    for (std::size_t i = begin_[k]; i < begin_[k + 1]; ++i) visit(items_[i]);
   }
 
-  std::size_t bucket(int rank) const {
-    return static_cast<std::size_t>(static_cast<long long>(rank) * static_cast<long long>(buckets_) / ranks_);
+  std::vector<int> answer(std::span<const LocatorQuery> queries, bool parity) const {
+    std::vector<int> out(queries.size(), 0);
+    if (queries.size() <= kScanQueries) {
+      for (std::size_t i = 0; i < queries.size(); ++i) {
+        const LocatorQuery& q = queries[i];
+        out[i] = parity ? crossings(q.v, q.t, q.side) : winding(q.v, q.t, q.side);
+      }
+      return out;
+    }
+    sweep(queries, parity, out);
+    return out;
   }
-  std::pair<std::size_t, std::size_t> bucket_span(int a, int b) const {
-    const int ra = arr_.x_rank[a];
-    const int rb = arr_.x_rank[b];
-    return {bucket(std::min(ra, rb)), bucket(std::max(ra, rb))};
+
+  int lo(int e) const { return std::min(edges_[e].src, edges_[e].dst); }
+  int hi(int e) const { return std::max(edges_[e].src, edges_[e].dst); }
+
+  // The order of the edges crossing the sweep line, from below: the line passes through a
+  // point in lexicographic order (as if sheared by an infinitesimal angle), so vertical
+  // edges cross it like any other and every edge it crosses has lo before it and hi after.
+  // Edges crossing the line never cross each other, so their order is fixed while they are
+  // in it; coinciding edges are ordered by index.
+  struct Below {
+    using is_transparent = void;
+    const WindingLocator* loc;
+    bool operator()(int a, int b) const { return loc->is_below(a, b); }
+    // An edge against a query point: e below q, and q below e.
+    bool operator()(int e, const LocatorQuery& q) const { return loc->side_of(e, q) > 0; }
+    bool operator()(const LocatorQuery& q, int e) const { return loc->side_of(e, q) < 0; }
+  };
+
+  // Sign of orient(lo, hi, q): positive when q lies above edge e.
+  int side_of(int e, const LocatorQuery& q) const {
+    const auto& p = arr_.points;
+    const int l = lo(e), h = hi(e);
+    return orient_beside<K>(p[l], p[h], p[q.v], p[q.t], q.side, q.v == l || q.v == h);
+  }
+
+  bool is_below(int a, int b) const {
+    if (a == b) return false;
+    const auto& p = arr_.points;
+    const int la = lo(a), lb = lo(b), ha = hi(a), hb = hi(b);
+    Sign s = Sign::zero;
+    if (la == lb) {
+      s = K::orient2d(p[la], p[ha], p[hb]);  // positive: b leaves the shared end above a
+    } else if (la < lb) {
+      s = K::orient2d(p[la], p[ha], p[lb]);  // b starts above a, or below it
+      if (s == Sign::zero) s = K::orient2d(p[la], p[ha], p[hb]);
+    } else {
+      s = K::orient2d(p[lb], p[hb], p[la]);
+      if (s == Sign::zero) s = K::orient2d(p[lb], p[hb], p[ha]);
+      s = s == Sign::positive ? Sign::negative : (s == Sign::negative ? Sign::positive : Sign::zero);
+    }
+    if (s == Sign::zero) return a < b;  // coinciding edges (or inconsistent inexact predicates)
+    return s == Sign::positive;
+  }
+
+  // One sweep over the points in lexicographic order. Each edge, when it enters the line,
+  // gets the value of the ray count just below it: its own contribution plus the value of
+  // the edge just above it. A query is answered by the first edge above its point, between
+  // the two points of the sweep it falls between: just after v when t comes after v, else
+  // just before.
+  void sweep(std::span<const LocatorQuery> queries, bool parity, std::vector<int>& out) const {
+    const int n_points = arr_.num_points();
+    const int m = static_cast<int>(edges_.size());
+    // Edges by lo and by hi, queries by the point after which they are asked (counting sorts).
+    const auto bucket = [&](int count, auto&& key) {
+      std::vector<int> begin(static_cast<std::size_t>(n_points) + 2, 0);
+      for (int i = 0; i < count; ++i) ++begin[key(i) + 1];
+      for (std::size_t k = 1; k < begin.size(); ++k) begin[k] += begin[k - 1];
+      std::vector<int> items(static_cast<std::size_t>(count));
+      std::vector<int> fill(begin.begin(), begin.end() - 1);
+      for (int i = 0; i < count; ++i) items[fill[key(i)]++] = i;
+      return std::pair(std::move(begin), std::move(items));
+    };
+    const auto [lo_begin, by_lo] = bucket(m, [&](int e) { return lo(e); });
+    const auto [hi_begin, by_hi] = bucket(m, [&](int e) { return hi(e); });
+    // Position v (after v) or v - 1 (before v); -1 (before every point) is bucket 0 by the +1.
+    const auto position = [&](int i) {
+      const LocatorQuery& q = queries[static_cast<std::size_t>(i)];
+      return (q.t > q.v ? q.v : q.v - 1) + 1;
+    };
+    const auto [q_begin, by_position] = bucket(static_cast<int>(queries.size()), position);
+
+    detail::BlockedOrder line;
+    const Below below_of{this};
+    std::vector<int> below(static_cast<std::size_t>(m), 0);  // ray count just below each edge
+    const auto contribution = [&](int e) { return parity ? 1 : (edges_[e].src > edges_[e].dst ? 1 : -1); };
+    std::vector<int> entering;
+    for (int p = 0; p < n_points; ++p) {
+      for (int i = hi_begin[p]; i < hi_begin[p + 1]; ++i) line.erase(by_hi[i], below_of);
+      // Edges entering at p lie next to each other on the line: inserted from the top, each
+      // finds the edge just above it already there, and takes its value from it.
+      entering.assign(by_lo.begin() + lo_begin[p], by_lo.begin() + lo_begin[p + 1]);
+      if (entering.size() > 1) std::sort(entering.begin(), entering.end(), [&](int a, int b) { return is_below(b, a); });
+      for (const int e : entering) {
+        const int up = line.insert(e, below_of);
+        below[e] = contribution(e) + (up < 0 ? 0 : below[up]);
+      }
+      for (int i = q_begin[p + 1]; i < q_begin[p + 2]; ++i) {
+        const int qi = by_position[i];
+        const int e = line.lower_bound(queries[qi], below_of);  // the first edge above the point
+        out[qi] = e < 0 ? 0 : below[e];
+      }
+    }
   }
 
   const Arrangement<K>& arr_;
   std::span<const Edge> edges_;
-  bool direct_ = false;
-  std::size_t buckets_ = 1;
-  int ranks_ = 1;
-  std::vector<std::size_t> begin_;
-  std::vector<int> items_;
 };
 
 }  // namespace mk

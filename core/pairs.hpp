@@ -1,11 +1,17 @@
-// Candidate pairs of segments whose bounding boxes overlap, found through monotone chains.
-// [MK89 §4.3] (sub-quadratic intersection finding; the all-pairs baseline is kept)
+// Candidate pairs of segments whose bounding boxes overlap, found through monotone chains:
+// a sweep over x of the chains' boxes with an interval tree over y, and the segments of two
+// chains paired by merging them. [MK89 §4.3] (sub-quadratic intersection finding; the
+// all-pairs baseline is kept)
 // Preconditions: point ids follow lexicographic order (see Arrangement::points); the items
 // of one ring come consecutively, in ring order, each marked `continues` except the first.
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <span>
+#include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "kernel/kernel.hpp"
@@ -29,12 +35,15 @@ enum class PairSearch : unsigned char { sweep, all_pairs };
 
 namespace detail {
 
-// A maximal run of consecutive segments of one ring that is monotone in x (lexicographic
-// order: point ids increase along it, or decrease) and in y. Its bounding box is spanned by
-// its two ends, and the x-ranges of its segments follow each other without overlapping
-// except at shared ends: two chains are compared by merging them in x, in time linear in
-// their overlap, instead of segment by segment. This is how GEOS (monotone chains) and
-// Boost.Geometry (monotonic sections) avoid most pairwise tests.
+// A run of at most kMaxChain consecutive segments of one ring that all go the same way: the
+// same way along the ring in lexicographic order, all rising, all falling or all level in y,
+// all vertical or none. Its bounding box is spanned by its two ends, and the x-ranges of its
+// segments follow each other without overlapping except at shared ends: two chains are
+// compared by merging them in x, in time linear in their overlap, instead of segment by
+// segment. This is how GEOS (monotone chains) and Boost.Geometry (monotonic sections) avoid
+// most pairwise tests. Level and vertical segments start chains of their own, and chains
+// are short, so that a chain's box stays close to its segments (the box of an L of two
+// sides of a large square would overlap every smaller square inside it).
 struct Chain {
   int first = 0;  // range of `order` (items sorted by lo along the chain)
   int last = 0;
@@ -45,104 +54,351 @@ struct Chain {
   int group = 0;
 };
 
+inline constexpr int kMaxChain = 256;
+
 }  // namespace detail
 
-// Calls f(i, j) for every pair of items whose bounding boxes overlap (closed boxes), except
-// pairs of segments of one monotone chain, which never meet but at shared ends. With
-// `bipartite`, only pairs from different groups are reported. `x_rank` gives each point
-// id the rank of its x among the distinct x values.
-template <Kernel K, class F>
-void for_each_candidate_pair(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
-                             const std::vector<SweepItem>& items, bool bipartite, PairSearch search, F&& f) {
-  const int n = static_cast<int>(items.size());
-  if (search == PairSearch::all_pairs) {
-    for (int i = 0; i < n; ++i) {
-      for (int j = i + 1; j < n; ++j) {
-        if (bipartite && items[i].group == items[j].group) continue;
-        f(i, j);
-      }
+// The candidate pairs of a set of items, in parts that can be searched on different threads:
+// every pair belongs to exactly one part, and the parts and the order of the pairs within
+// each depend on the input alone. A pair is (i, j), item indices, for every two items whose
+// bounding boxes overlap (closed boxes), except pairs of segments of one chain, which never
+// meet but at shared ends; with `bipartite`, only pairs from different groups (0 and 1).
+// Chains are paired by a recursive partition of their boxes, as Boost.Geometry's
+// `partition` does: a set is split at a pivot along x (x-ranks) or y (alternately) into the
+// boxes below it, above it and across it; boxes below never meet boxes above, so the
+// search goes on in the two halves, and between the boxes across and all the others, with
+// the other axis. Small sets are paired directly. The first levels of the recursion are
+// planned as separate parts.
+template <Kernel K>
+class CandidatePairs {
+ public:
+  // `x_rank` gives each point id the rank of its x among the distinct x values.
+  CandidatePairs(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
+                 const std::vector<SweepItem>& items, bool bipartite, PairSearch search)
+      : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite), search_(search) {
+    if (search_ == PairSearch::sweep) {
+      build_chains();
+      plan();
     }
-    return;
   }
-  const auto y_less = [&](int u, int w) { return K::compare_y(pts[u], pts[w]) == Sign::negative; };
-  // y-direction of an item along its ring: -1, 0 (horizontal) or +1.
-  const auto y_dir = [&](const SweepItem& it) {
-    const Sign s = K::compare_y(pts[it.lo], pts[it.hi]);
-    const int up = s == Sign::negative ? 1 : (s == Sign::positive ? -1 : 0);
-    return it.forward ? up : -up;
-  };
 
-  // Cut the items into chains.
-  std::vector<int> order(items.size());
-  std::vector<detail::Chain> chains;
-  {
+  std::size_t parts() const { return search_ == PairSearch::sweep ? tasks_.size() : 1; }
+
+  // Calls f(i, j) for every pair of part `part`. Each part may be searched once.
+  template <class F>
+  void for_each_in_part(std::size_t part, F&& f) const {
+    if (search_ == PairSearch::all_pairs) {
+      const int n = static_cast<int>(items_.size());
+      for (int i = 0; i < n; ++i) {
+        for (int j = i + 1; j < n; ++j) {
+          if (bipartite_ && items_[i].group == items_[j].group) continue;
+          f(i, j);
+        }
+      }
+      return;
+    }
+    Task& t = tasks_[part];
+    if (t.self) {
+      search_self(t.a, t.axis, 0, f);
+    } else {
+      search_both(t.a, t.b, t.axis, 0, f);
+    }
+    t = Task();
+  }
+
+ private:
+  // A set of chains, or two sets to pair with each other, and the axis to split first.
+  struct Task {
+    std::vector<int> a, b;
+    int axis = 0;
+    bool self = false;
+  };
+  enum class Place : unsigned char { below, above, across };
+
+  static constexpr std::size_t kDirect = 48;  // sets this small (or pairs of sets) are paired directly
+  static constexpr int kMaxDepth = 96;
+
+  int xr(int id) const { return x_rank_[id]; }
+  bool y_less(int u, int w) const { return K::compare_y(pts_[u], pts_[w]) == Sign::negative; }
+  // The way a segment goes (see detail::Chain): along the ring, in y, vertical or not.
+  int course(const SweepItem& it) const {
+    const Sign s = K::compare_y(pts_[it.lo], pts_[it.hi]);
+    const int up = s == Sign::negative ? 1 : (s == Sign::positive ? -1 : 0);
+    const bool vertical = xr(it.lo) == xr(it.hi);
+    return (it.forward ? 1 : 0) | (up + 1) << 1 | (vertical ? 8 : 0);
+  }
+
+  // Cuts the items into chains.
+  void build_chains() {
+    const int n = static_cast<int>(items_.size());
+    order_.resize(items_.size());
     int start = 0;
-    int dir = 0;
+    int start_course = 0;
     const auto close = [&](int end) {
       detail::Chain c;
       c.first = start;
       c.last = end;
-      c.group = items[start].group;
-      std::iota(order.begin() + start, order.begin() + end, start);
-      if (!items[start].forward) std::reverse(order.begin() + start, order.begin() + end);
-      c.lo = items[order[start]].lo;
-      c.hi = items[order[end - 1]].hi;
+      c.group = items_[start].group;
+      std::iota(order_.begin() + start, order_.begin() + end, start);
+      if (!items_[start].forward) std::reverse(order_.begin() + start, order_.begin() + end);
+      c.lo = items_[order_[start]].lo;
+      c.hi = items_[order_[end - 1]].hi;
       // Monotone in y: the extreme ends are the chain's two ends.
-      const int a = c.lo;
-      const int b = c.hi;
-      c.y_min = y_less(b, a) ? b : a;
-      c.y_max = c.y_min == a ? b : a;
-      chains.push_back(c);
+      c.y_min = y_less(c.hi, c.lo) ? c.hi : c.lo;
+      c.y_max = c.y_min == c.lo ? c.hi : c.lo;
+      chains_.push_back(c);
     };
     for (int i = 0; i < n; ++i) {
-      const SweepItem& it = items[i];
-      const int d = y_dir(it);
-      const bool joins = i > start && it.continues && it.forward == items[i - 1].forward && it.group == items[i - 1].group &&
-                         (d == 0 || dir == 0 || d == dir);
+      const SweepItem& it = items_[i];
+      const int k = course(it);
+      const bool joins = i > start && i - start < detail::kMaxChain && it.continues && it.group == items_[i - 1].group &&
+                         k == start_course;
       if (i > 0 && !joins) {
         close(i);
         start = i;
-        dir = 0;
       }
-      if (dir == 0) dir = d;
+      if (i == start) start_course = k;
     }
     if (n > 0) close(n);
   }
 
-  // Segment pairs of two chains whose x-ranges overlap, by merging them in x.
-  const auto xr = [&](int id) { return x_rank[id]; };
-  const auto y_overlap = [&](const SweepItem& a, const SweepItem& b) {
-    const bool a_up = K::compare_y(pts[a.lo], pts[a.hi]) != Sign::positive;
-    const bool b_up = K::compare_y(pts[b.lo], pts[b.hi]) != Sign::positive;
+  // The first levels of the partition, each subproblem left at the last level a part.
+  void plan() {
+    const std::size_t m = chains_.size();
+    const int levels = m >= 32768 ? 2 : (m >= 4096 ? 1 : 0);
+    if (bipartite_) {
+      std::vector<int> a, b;
+      for (int c = 0; c < static_cast<int>(m); ++c) (chains_[c].group == 0 ? a : b).push_back(c);
+      plan_both(std::move(a), std::move(b), 0, levels);
+    } else {
+      std::vector<int> all(m);
+      std::iota(all.begin(), all.end(), 0);
+      plan_self(std::move(all), 0, levels);
+    }
+  }
+  void plan_self(std::vector<int> s, int axis, int levels) {
+    if (s.size() < 2) return;
+    if (levels == 0 || s.size() <= kDirect) {
+      tasks_.push_back({std::move(s), {}, axis, true});
+      return;
+    }
+    const auto [below, above] = split(s, axis);
+    const std::vector<int> low(s.begin(), s.begin() + below), high(s.begin() + below, s.begin() + above);
+    const std::vector<int> sides(s.begin(), s.begin() + above), across(s.begin() + above, s.end());
+    plan_self(low, 1 - axis, levels - 1);
+    plan_self(high, 1 - axis, levels - 1);
+    plan_both(sides, across, 1 - axis, levels - 1);
+    plan_self(across, 1 - axis, levels - 1);
+  }
+  void plan_both(std::vector<int> a, std::vector<int> b, int axis, int levels) {
+    if (a.empty() || b.empty()) return;
+    if (levels == 0 || a.size() * b.size() <= kDirect * kDirect / 4) {
+      tasks_.push_back({std::move(a), std::move(b), axis, false});
+      return;
+    }
+    const std::size_t na = a.size();
+    std::vector<int> ab(std::move(a));
+    ab.insert(ab.end(), b.begin(), b.end());
+    const int pivot = choose_pivot(ab, axis);
+    a.assign(ab.begin(), ab.begin() + static_cast<std::ptrdiff_t>(na));
+    const auto [a_below, a_above] = split_at(a, axis, pivot);
+    const auto [b_below, b_above] = split_at(b, axis, pivot);
+    const auto part = [](const std::vector<int>& v, std::size_t from, std::size_t to) {
+      return std::vector<int>(v.begin() + static_cast<std::ptrdiff_t>(from), v.begin() + static_cast<std::ptrdiff_t>(to));
+    };
+    plan_both(part(a, 0, a_below), part(b, 0, b_below), 1 - axis, levels - 1);
+    plan_both(part(a, a_below, a_above), part(b, b_below, b_above), 1 - axis, levels - 1);
+    plan_both(part(a, 0, a_above), part(b, b_above, b.size()), 1 - axis, levels - 1);
+    plan_both(part(a, a_above, a.size()), b, 1 - axis, levels - 1);
+  }
+
+  // The pivot along `axis`: the median of the low ends of up to 15 boxes spread over the set
+  // (an x-rank for x, a point id for y); see place().
+  int choose_pivot(std::span<const int> s, int axis) const {
+    std::array<int, 15> sample{};
+    const std::size_t k = std::min<std::size_t>(sample.size(), s.size());
+    for (std::size_t i = 0; i < k; ++i) {
+      const detail::Chain& c = chains_[s[k == 1 ? 0 : i * (s.size() - 1) / (k - 1)]];
+      sample[i] = axis == 0 ? xr(c.lo) : c.y_min;
+    }
+    const auto mid = sample.begin() + static_cast<std::ptrdiff_t>(k / 2);
+    if (axis == 0) {
+      std::nth_element(sample.begin(), mid, sample.begin() + static_cast<std::ptrdiff_t>(k));
+    } else {
+      std::nth_element(sample.begin(), mid, sample.begin() + static_cast<std::ptrdiff_t>(k),
+                       [&](int u, int w) { return y_less(u, w); });
+    }
+    return *mid;
+  }
+  // Where a box lies against the line just above the pivot's coordinate: a box ending at the
+  // pivot lies below it, one starting there and going on crosses it. Grid-aligned boxes
+  // then rarely cross the line (a closed pivot line would cross every box touching it).
+  Place place(int chain, int axis, int pivot) const {
+    const detail::Chain& c = chains_[chain];
+    if (axis == 0) {
+      if (xr(c.hi) <= pivot) return Place::below;
+      if (xr(c.lo) > pivot) return Place::above;
+      return Place::across;
+    }
+    if (!y_less(pivot, c.y_max)) return Place::below;
+    if (y_less(pivot, c.y_min)) return Place::above;
+    return Place::across;
+  }
+  // Reorders s as [below | above | across] the pivot; returns the ends of the first two.
+  std::pair<std::size_t, std::size_t> split_at(std::span<int> s, int axis, int pivot) const {
+    const auto b = std::partition(s.begin(), s.end(), [&](int c) { return place(c, axis, pivot) == Place::below; });
+    const auto e = std::partition(b, s.end(), [&](int c) { return place(c, axis, pivot) == Place::above; });
+    return {static_cast<std::size_t>(b - s.begin()), static_cast<std::size_t>(e - s.begin())};
+  }
+  std::pair<std::size_t, std::size_t> split(std::span<int> s, int axis) const {
+    return split_at(s, axis, choose_pivot(s, axis));
+  }
+
+  // The bounding box of a set of chains: x-ranks and point ids of the lowest and highest y.
+  struct Bounds {
+    int x0, x1, y0, y1;
+  };
+  Bounds bounds(std::span<const int> s) const {
+    const detail::Chain& c0 = chains_[s[0]];
+    Bounds b{xr(c0.lo), xr(c0.hi), c0.y_min, c0.y_max};
+    for (const int i : s.subspan(1)) {
+      const detail::Chain& c = chains_[i];
+      b.x0 = std::min(b.x0, xr(c.lo));
+      b.x1 = std::max(b.x1, xr(c.hi));
+      if (y_less(c.y_min, b.y0)) b.y0 = c.y_min;
+      if (y_less(b.y1, c.y_max)) b.y1 = c.y_max;
+    }
+    return b;
+  }
+  // Moves the chains of s whose boxes meet `b` to its front; returns how many.
+  std::size_t keep_meeting(std::span<int> s, const Bounds& b) const {
+    const auto e = std::partition(s.begin(), s.end(), [&](int i) {
+      const detail::Chain& c = chains_[i];
+      return xr(c.lo) <= b.x1 && b.x0 <= xr(c.hi) && !y_less(c.y_max, b.y0) && !y_less(b.y1, c.y_min);
+    });
+    return static_cast<std::size_t>(e - s.begin());
+  }
+
+  bool boxes_meet(const detail::Chain& c, const detail::Chain& d) const {
+    return xr(c.lo) <= xr(d.hi) && xr(d.lo) <= xr(c.hi) && !y_less(d.y_max, c.y_min) && !y_less(c.y_max, d.y_min);
+  }
+  template <class F>
+  void pair_if_meet(int c, int d, F& f) const {
+    if (boxes_meet(chains_[c], chains_[d])) merge(chains_[c], chains_[d], f);
+  }
+
+  // Pairs within one set.
+  // `stuck`: the last split, along the other axis, separated nothing.
+  template <class F>
+  void search_self(std::span<int> s, int axis, int depth, F& f, bool stuck = false) const {
+    if (s.size() < 2) return;
+    if (s.size() <= kDirect || depth >= kMaxDepth) {
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        for (std::size_t j = i + 1; j < s.size(); ++j) pair_if_meet(s[i], s[j], f);
+      }
+      return;
+    }
+    const auto [below, above] = split(s, axis);
+    if (below == 0 && above == 0) {  // every box lies across the pivot: try the other axis
+      search_self(s, 1 - axis, stuck ? kMaxDepth : depth + 1, f, true);
+      return;
+    }
+    const int next = depth + 1;
+    search_self(s.subspan(0, below), 1 - axis, next, f);
+    search_self(s.subspan(below, above - below), 1 - axis, next, f);
+    // The boxes across the pivot meet only boxes near them: the others are not searched again.
+    const std::span<int> across = s.subspan(above);
+    if (!across.empty()) {
+      const std::size_t near = keep_meeting(s.subspan(0, above), bounds(across));
+      search_both(s.subspan(0, near), across, 1 - axis, next, f);
+    }
+    search_self(across, 1 - axis, next, f);
+  }
+
+  // Pairs between two sets.
+  template <class F>
+  void search_both(std::span<int> a, std::span<int> b, int axis, int depth, F& f, bool stuck = false) const {
+    if (a.empty() || b.empty()) return;
+    // A set of one or two boxes is paired directly: splitting costs as much as pairing.
+    if (a.size() * b.size() <= kDirect * kDirect / 4 || std::min(a.size(), b.size()) <= 2 || depth >= kMaxDepth) {
+      for (const int c : a) {
+        for (const int d : b) pair_if_meet(c, d, f);
+      }
+      return;
+    }
+    int pivot = 0;
+    {  // the pivot of a and b together
+      std::array<int, 16> picks{};
+      std::size_t k = 0;
+      for (const auto* set : {&a, &b}) {
+        const std::size_t n = set->size();
+        for (std::size_t i = 0; i < 8 && i < n; ++i) picks[k++] = (*set)[n == 1 ? 0 : i * (n - 1) / std::min<std::size_t>(7, n - 1)];
+      }
+      pivot = choose_pivot(std::span<const int>(picks.data(), k), axis);
+    }
+    const auto [a_below, a_above] = split_at(a, axis, pivot);
+    const auto [b_below, b_above] = split_at(b, axis, pivot);
+    if (a_above + b_above == 0) {  // every box lies across the pivot: try the other axis
+      search_both(a, b, 1 - axis, stuck ? kMaxDepth : depth + 1, f, true);
+      return;
+    }
+    const int next = depth + 1;
+    search_both(a.subspan(0, a_below), b.subspan(0, b_below), 1 - axis, next, f);
+    search_both(a.subspan(a_below, a_above - a_below), b.subspan(b_below, b_above - b_below), 1 - axis, next, f);
+    // The boxes across the pivot meet only boxes near them: the others are not searched again.
+    const std::span<int> b_across = b.subspan(b_above);
+    if (!b_across.empty() && a_above > 0) {  // b across, a not
+      const std::size_t near = keep_meeting(a.subspan(0, a_above), bounds(b_across));
+      search_both(a.subspan(0, near), b_across, 1 - axis, next, f);
+    }
+    const std::span<int> a_across = a.subspan(a_above);
+    if (!a_across.empty()) {  // a across, all of b
+      const std::size_t near = keep_meeting(b, bounds(a_across));
+      search_both(a_across, b.subspan(0, near), 1 - axis, next, f);
+    }
+  }
+
+  // The segments of chain x that can meet chain `other`: a chain is monotone in x and in y,
+  // so those ending left of other's start, and those entirely below or above other's
+  // y-range, form a prefix and a suffix of x's segments (in x order), found by binary search.
+  std::pair<int, int> window(const detail::Chain& x, const detail::Chain& other) const {
+    const auto first = order_.begin() + x.first;
+    const auto last = order_.begin() + x.last;
+    auto b = std::partition_point(first, last, [&](int k) { return xr(items_[k].hi) < xr(other.lo); });
+    auto e = std::partition_point(b, last, [&](int k) { return xr(items_[k].lo) <= xr(other.hi); });
+    if (y_less(x.hi, x.lo)) {  // descending in y: a segment spans y(hi) .. y(lo)
+      b = std::partition_point(b, e, [&](int k) { return y_less(other.y_max, items_[k].hi); });
+      e = std::partition_point(b, e, [&](int k) { return !y_less(items_[k].lo, other.y_min); });
+    } else {  // ascending (or level): a segment spans y(lo) .. y(hi)
+      b = std::partition_point(b, e, [&](int k) { return y_less(items_[k].hi, other.y_min); });
+      e = std::partition_point(b, e, [&](int k) { return !y_less(other.y_max, items_[k].lo); });
+    }
+    return {static_cast<int>(b - order_.begin()), static_cast<int>(e - order_.begin())};
+  }
+
+  bool y_overlap(const SweepItem& a, const SweepItem& b) const {
+    const bool a_up = K::compare_y(pts_[a.lo], pts_[a.hi]) != Sign::positive;
+    const bool b_up = K::compare_y(pts_[b.lo], pts_[b.hi]) != Sign::positive;
     const int a_min = a_up ? a.lo : a.hi;
     const int a_max = a_up ? a.hi : a.lo;
     const int b_min = b_up ? b.lo : b.hi;
     const int b_max = b_up ? b.hi : b.lo;
     return !y_less(b_max, a_min) && !y_less(a_max, b_min);
-  };
-  // The segments of chain x that can meet chain `other`: a chain is monotone in x and in y,
-  // so those ending left of other's start, and those entirely below or above other's
-  // y-range, form a prefix and a suffix of x's segments (in x order), found by binary search.
-  const auto window = [&](const detail::Chain& x, const detail::Chain& other) {
-    const auto first = order.begin() + x.first;
-    const auto last = order.begin() + x.last;
-    auto b = std::partition_point(first, last, [&](int k) { return xr(items[k].hi) < xr(other.lo); });
-    auto e = std::partition_point(b, last, [&](int k) { return xr(items[k].lo) <= xr(other.hi); });
-    if (y_less(x.hi, x.lo)) {  // descending in y: a segment spans y(hi) .. y(lo)
-      b = std::partition_point(b, e, [&](int k) { return y_less(other.y_max, items[k].hi); });
-      e = std::partition_point(b, e, [&](int k) { return !y_less(items[k].lo, other.y_min); });
-    } else {  // ascending (or level): a segment spans y(lo) .. y(hi)
-      b = std::partition_point(b, e, [&](int k) { return y_less(items[k].hi, other.y_min); });
-      e = std::partition_point(b, e, [&](int k) { return !y_less(other.y_max, items[k].lo); });
+  }
+
+  // Segment pairs of two chains whose boxes overlap, by merging them in x: c is in the tree,
+  // d is entering it.
+  template <class F>
+  void merge(const detail::Chain& c, const detail::Chain& d, F& f) const {
+    if (c.last - c.first == 1 && d.last - d.first == 1) {  // two segments: their boxes meet
+      f(order_[c.first], order_[d.first]);
+      return;
     }
-    return std::pair<int, int>(static_cast<int>(b - order.begin()), static_cast<int>(e - order.begin()));
-  };
-  const auto merge = [&](const detail::Chain& c, const detail::Chain& d) {
     auto [i, c_end] = window(c, d);
     auto [j, d_end] = window(d, c);
     while (i < c_end && j < d_end) {
-      const SweepItem& a = items[order[i]];
-      const SweepItem& b = items[order[j]];
+      const SweepItem& a = items_[order_[i]];
+      const SweepItem& b = items_[order_[j]];
       if (xr(a.hi) < xr(b.lo)) {
         ++i;
         continue;
@@ -152,28 +408,29 @@ void for_each_candidate_pair(const std::vector<typename K::Point>& pts, const st
         continue;
       }
       // a overlaps b in x: so may a the segments after b that start before a ends.
-      for (int k = j; k < d_end && xr(items[order[k]].lo) <= xr(a.hi); ++k) {
-        if (y_overlap(a, items[order[k]])) f(order[i], order[k]);
+      for (int k = j; k < d_end && xr(items_[order_[k]].lo) <= xr(a.hi); ++k) {
+        if (y_overlap(a, items_[order_[k]])) f(order_[i], order_[k]);
       }
       ++i;
     }
-  };
-
-  // Chain pairs whose boxes overlap: a sweep over x over the chains.
-  std::vector<int> by_x(chains.size());
-  std::iota(by_x.begin(), by_x.end(), 0);
-  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return chains[a].lo < chains[b].lo; });
-  const int m = static_cast<int>(chains.size());
-  for (int oi = 0; oi < m; ++oi) {
-    const detail::Chain& c = chains[by_x[oi]];
-    for (int oj = oi + 1; oj < m; ++oj) {
-      const detail::Chain& d = chains[by_x[oj]];
-      if (xr(d.lo) > xr(c.hi)) break;
-      if (bipartite && c.group == d.group) continue;
-      if (y_less(d.y_max, c.y_min) || y_less(c.y_max, d.y_min)) continue;
-      merge(c, d);
-    }
   }
+
+  const std::vector<typename K::Point>& pts_;
+  const std::vector<int>& x_rank_;
+  const std::vector<SweepItem>& items_;
+  bool bipartite_;
+  PairSearch search_;
+  std::vector<int> order_;
+  std::vector<detail::Chain> chains_;
+  mutable std::vector<Task> tasks_;
+};
+
+// Calls f(i, j) for every candidate pair (see CandidatePairs), part after part.
+template <Kernel K, class F>
+void for_each_candidate_pair(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
+                             const std::vector<SweepItem>& items, bool bipartite, PairSearch search, F&& f) {
+  const CandidatePairs<K> pairs(pts, x_rank, items, bipartite, search);
+  for (std::size_t p = 0; p < pairs.parts(); ++p) pairs.for_each_in_part(p, f);
 }
 
 }  // namespace mk

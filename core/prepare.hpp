@@ -16,6 +16,7 @@
 #include "core/edge_insertions.hpp"
 #include "core/error.hpp"
 #include "core/pairs.hpp"
+#include "core/parallel.hpp"
 #include "predicates/segments.hpp"
 
 namespace mk {
@@ -82,7 +83,7 @@ inline std::string edge_name(const RingEdge& e) {
 // and rejects proper crossings.
 template <Kernel K>
 void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
-                          std::vector<IdRing>& rings, const char* poly_name, PairSearch search) {
+                          std::vector<IdRing>& rings, const char* poly_name, PairSearch search, unsigned threads = 1) {
   struct EdgeRef {
     int ring;
     int k;
@@ -103,26 +104,49 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
       refs.push_back({r, static_cast<int>(k)});
     }
   }
-  EdgeInsertions inserted;  // points of the polygon on its own edges, by edge index
-  for_each_candidate_pair<K>(pts, x_rank, items, false, search, [&](int i, int j) {
-    const SweepItem& a = items[i];
-    const SweepItem& b = items[j];
-    if (a.lo == b.lo && a.hi == b.hi) return;  // identical as sets: allowed [MK89 §2.2]
-    const auto rel = relate_segments_by_id<K>(pts, a.lo, a.hi, b.lo, b.hi);
-    if (rel.proper_crossing) {
-      const EdgeRef ea = refs[i];
-      const EdgeRef eb = refs[j];
-      const RingEdge first = ring_edge(rings[ea.ring], ea.ring, ea.k);
-      const RingEdge second = ring_edge(rings[eb.ring], eb.ring, eb.k);
-      throw CrossingEdges(poly_name[0] == 'A' ? 0 : 1, first, second,
-                          std::string("polygon ") + poly_name + ": " + edge_name(first) + " crosses " +
-                              edge_name(second) + "; edges of a polygon may touch but must not cross");
-    }
-    if (rel.c_inside_ab) inserted.add(i, b.lo);
-    if (rel.d_inside_ab) inserted.add(i, b.hi);
-    if (rel.a_inside_cd) inserted.add(j, a.lo);
-    if (rel.b_inside_cd) inserted.add(j, a.hi);
+  // Per part of the pair search (see CandidatePairs): points of the polygon on its own
+  // edges, by edge index, and the first proper crossing. Of the proper crossings, the error
+  // names the one met first walking the rings: the first edge (in input order) that crosses
+  // an earlier one, and the earliest of those, whatever order the search finds them in.
+  CandidatePairs<K> pairs(pts, x_rank, items, false, search);
+  struct Found {
+    EdgeInsertions inserted;
+    std::pair<int, int> crossing{-1, -1};
+  };
+  std::vector<Found> found(pairs.parts());
+  run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
+    Found& out = found[part];
+    pairs.for_each_in_part(part, [&](int i, int j) {
+      const SweepItem& a = items[i];
+      const SweepItem& b = items[j];
+      if (a.lo == b.lo && a.hi == b.hi) return;  // identical as sets: allowed [MK89 §2.2]
+      const auto rel = relate_segments_by_id<K>(pts, a.lo, a.hi, b.lo, b.hi);
+      if (rel.proper_crossing) {
+        const std::pair<int, int> c{std::max(i, j), std::min(i, j)};
+        if (out.crossing.first < 0 || c < out.crossing) out.crossing = c;
+        return;
+      }
+      if (rel.c_inside_ab) out.inserted.add(i, b.lo);
+      if (rel.d_inside_ab) out.inserted.add(i, b.hi);
+      if (rel.a_inside_cd) out.inserted.add(j, a.lo);
+      if (rel.b_inside_cd) out.inserted.add(j, a.hi);
+    });
   });
+  EdgeInsertions inserted;
+  std::pair<int, int> crossing{-1, -1};
+  for (Found& f : found) {
+    if (f.crossing.first >= 0 && (crossing.first < 0 || f.crossing < crossing)) crossing = f.crossing;
+    inserted.append(std::move(f.inserted));
+  }
+  if (crossing.first >= 0) {
+    const EdgeRef ea = refs[crossing.first];
+    const EdgeRef eb = refs[crossing.second];
+    const RingEdge first = ring_edge(rings[ea.ring], ea.ring, ea.k);
+    const RingEdge second = ring_edge(rings[eb.ring], eb.ring, eb.k);
+    throw CrossingEdges(poly_name[0] == 'A' ? 0 : 1, first, second,
+                        std::string("polygon ") + poly_name + ": " + edge_name(first) + " crosses " +
+                            edge_name(second) + "; edges of a polygon may touch but must not cross");
+  }
   if (inserted.empty()) return;
   inserted.group();
   std::vector<int> ins;
@@ -245,7 +269,7 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
 // polygons vertex-complete and splits their rings into irreducible cycles.
 template <Kernel K>
 Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPolygon<typename K::Point>& b,
-                       PairSearch search = PairSearch::sweep) {
+                       PairSearch search = PairSearch::sweep, unsigned threads = 1) {
   Arrangement<K> arr;
   const std::array<const BasicPolygon<typename K::Point>*, 2> in = {&a, &b};
   std::size_t total = 0;
@@ -275,11 +299,15 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
     arr.x_rank[i] = i == 0 ? 0 : arr.x_rank[i - 1] + (K::compare_x(arr.points[i - 1], arr.points[i]) != Sign::zero);
   }
 
-  std::vector<int> where(arr.points.size(), -1);
-  std::size_t ref = 0;
-  for (int p = 0; p < 2; ++p) {
+  // A and B are made vertex-complete and split into cycles independently (on two threads
+  // when there are several), each with its own marks per point.
+  std::array<std::size_t, 2> first_ref{0, 0};  // input number of each polygon's first vertex
+  for (const auto& ring : a.rings) first_ref[1] += ring.size();
+  const unsigned per_polygon = threads_for(total, threads) > 1 ? (threads + 1) / 2 : 1;
+  run_tasks(threads_for(total, threads), 2, [&](std::size_t p) {
     PreparedPolygon& out = arr.polygon[p];
     out.type = in[p]->type;
+    std::size_t ref = first_ref[p];
     std::vector<detail::IdRing> rings(in[p]->rings.size());
     for (std::size_t r = 0; r < rings.size(); ++r) {
       rings[r].ids.reserve(in[p]->rings[r].size());
@@ -297,12 +325,13 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
         rings[r].input_index.pop_back();
       }
     }
-    detail::make_vertex_complete<K>(arr.points, arr.x_rank, rings, p == 0 ? "A" : "B", search);
+    detail::make_vertex_complete<K>(arr.points, arr.x_rank, rings, p == 0 ? "A" : "B", search, per_polygon);
+    std::vector<int> where(arr.points.size(), -1);
     for (std::size_t r = 0; r < rings.size(); ++r) {
       if (rings[r].ids.empty()) continue;
       detail::split_into_cycles(std::move(rings[r]), static_cast<int>(r), where, out);
     }
-  }
+  });
   return arr;
 }
 

@@ -133,8 +133,8 @@ AngularIncidence sort_around_vertices(const Arrangement<K>& arr, const std::vect
 // Orients each ring as given, or reversed where `reversed` says so, and finds the first edge
 // beside which the winding number of the rings is not 0 or 1: first counting the rings of
 // each group alone (a group's rings beside a group's edges), then all rings together. Exact;
-// O(n log n) for n vertices apart from the locator's queries, one per cycle (step 1 asks the
-// same). Empty when every winding number is 0 or 1.
+// O(n log n) for n vertices: the locator answers its queries, one per cycle, in one sweep.
+// Empty when every winding number is 0 or 1.
 template <Kernel K>
 std::optional<WindingViolation> find_winding_violation(const BasicPolygon<typename K::Point>& rings,
                                                        const std::vector<int>& group,
@@ -215,12 +215,22 @@ std::optional<WindingViolation> find_winding_violation(const BasicPolygon<typena
       const std::span<const Edge> range(edges.data() + cycle_first_edge[c],
                                         static_cast<std::size_t>(cycle_first_edge[c_end] - cycle_first_edge[c]));
       const WindingLocator<K> locator(arr, range, c_end - c);
+      // One located point per cycle, all in one batch (a sweep when they are many: a scan of
+      // the edges per cycle would be quadratic on inputs of many rings).
+      std::vector<LocatorQuery> queries;
+      queries.reserve(c_end - c);
+      for (std::size_t q = c; q < c_end; ++q) {
+        const Edge& e0 = edges[static_cast<std::size_t>(cycle_first_edge[q])];
+        queries.push_back({e0.src, e0.dst, Side::left});
+      }
+      const std::vector<int> anchors = locator.windings(queries);
+      const std::size_t c_begin = c;
       for (; c < c_end; ++c) {
         const int first = cycle_first_edge[c];
         const int n = cycle_first_edge[c + 1] - first;
         const auto r = static_cast<std::size_t>(cycle_ring[c]);
         has_edges[r] = true;
-        int left = locator.winding(edges[first].src, edges[first].dst, Side::left);
+        int left = anchors[c - c_begin];
         for (int i = 0; i < n; ++i) {
           const int e = first + i;
           if (i > 0) left -= sector_sum(2 * e, 2 * (e - 1) + 1);

@@ -10,6 +10,7 @@
 
 #include "core/arrangement.hpp"
 #include "core/locator.hpp"
+#include "core/parallel.hpp"
 #include "core/tables.hpp"
 #include "predicates/ray.hpp"
 
@@ -29,11 +30,10 @@ bool is_counterclockwise(const Arrangement<K>& arr, const std::vector<int>& cycl
   return K::orient2d(arr.points[prev], arr.points[cycle[m]], arr.points[next]) == Sign::positive;
 }
 
-// Parity of the number of cycles of `poly` whose FAR contains the points just inside
-// `cycle` (the cycle itself included): odd for cycles at even nesting depth.
-template <Kernel K>
-bool is_at_even_depth(const PreparedPolygon& poly, std::size_t c, const std::unordered_map<std::uint64_t, int>& edge_count,
-                      bool ccw, const WindingLocator<K>& locator) {
+// The query for the parity of the number of cycles of `poly` whose FAR contains the points
+// just inside cycle c (the cycle itself included): odd for cycles at even nesting depth.
+inline LocatorQuery depth_query(const PreparedPolygon& poly, std::size_t c,
+                                const std::unordered_map<std::uint64_t, int>& edge_count, bool ccw) {
   const auto& cycle = poly.cycles[c];
   const auto n = cycle.size();
   // An edge no other edge coincides with, so that only ancestors contain the points beside it.
@@ -44,7 +44,7 @@ bool is_at_even_depth(const PreparedPolygon& poly, std::size_t c, const std::uno
       break;
     }
   }
-  return locator.crossings(cycle[k], cycle[(k + 1) % n], ccw ? Side::left : Side::right) % 2 == 1;
+  return {cycle[k], cycle[(k + 1) % n], ccw ? Side::left : Side::right};
 }
 
 }  // namespace detail
@@ -52,8 +52,11 @@ bool is_at_even_depth(const PreparedPolygon& poly, std::size_t c, const std::uno
 // Orients every cycle with FAR on its left (counterclockwise at even nesting depth), then
 // turns B against A where Table 1 says so.
 template <Kernel K>
-void normalize_orientations(Arrangement<K>& arr, Operation op) {
-  for (auto& poly : arr.polygon) {
+void normalize_orientations(Arrangement<K>& arr, Operation op, unsigned threads = 1) {
+  std::size_t work = 0;
+  for (const auto& poly : arr.polygon) work += poly.cycles.size() > 1 ? poly.cycles.size() : 0;
+  run_tasks(threads_for(4 * work, threads), 2, [&](std::size_t pi) {  // the polygons on two threads
+    PreparedPolygon& poly = arr.polygon[pi];
     // A polygon with one cycle has it at depth 0; only nested parts need the ray test.
     const bool single = poly.cycles.size() == 1;
     std::unordered_map<std::uint64_t, int> edge_count;
@@ -66,18 +69,26 @@ void normalize_orientations(Arrangement<K>& arr, Operation op) {
         }
       }
     }
-    const WindingLocator<K> locator(arr, edges, single ? 0 : poly.cycles.size());
     std::vector<bool> flip(poly.cycles.size(), false);
+    std::vector<bool> ccw(poly.cycles.size(), false);
+    std::vector<LocatorQuery> queries;
     for (std::size_t c = 0; c < poly.cycles.size(); ++c) {
       if (poly.cycles[c].size() < 3) continue;  // degenerate: both orientations at once
-      const bool ccw = detail::is_counterclockwise(arr, poly.cycles[c]);
-      const bool even = single || detail::is_at_even_depth(poly, c, edge_count, ccw, locator);
-      flip[c] = ccw != even;
+      ccw[c] = detail::is_counterclockwise(arr, poly.cycles[c]);
+      if (!single) queries.push_back(detail::depth_query(poly, c, edge_count, ccw[c]));
+    }
+    // All depths in one batch: a sweep over the polygon's edges when the cycles are many.
+    const std::vector<int> parities = WindingLocator<K>(arr, edges).crossing_parities(queries);
+    std::size_t next = 0;
+    for (std::size_t c = 0; c < poly.cycles.size(); ++c) {
+      if (poly.cycles[c].size() < 3) continue;
+      const bool even = single || parities[next++] % 2 == 1;
+      flip[c] = ccw[c] != even;
     }
     for (std::size_t c = 0; c < poly.cycles.size(); ++c) {
       if (flip[c]) std::reverse(poly.cycles[c].begin(), poly.cycles[c].end());
     }
-  }
+  });
   PreparedPolygon& b = arr.polygon[1];
   const auto mutual = kTable1[op_index(op)][type_index(arr.polygon[0].type)][type_index(b.type)];
   if (mutual == MutualOrientation::opposite) {

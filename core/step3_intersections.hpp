@@ -19,6 +19,7 @@
 #include "core/edge_insertions.hpp"
 #include "core/error.hpp"
 #include "core/pairs.hpp"
+#include "core/parallel.hpp"
 #include "predicates/segments.hpp"
 
 namespace mk {
@@ -34,8 +35,8 @@ struct PairHash {
 // A kernel that rounds crossing points may overflow (inputs near 1e300) or divide by a
 // rounded-to-zero denominator: its failure is reported, never written out as NaN or inf.
 template <Kernel K>
-void check_finite_crossing(const Arrangement<K>& arr, const Edge& a, const Edge& b) {
-  const mk::Point p = K::approx(arr.crossings.back());
+void check_finite_crossing(const Arrangement<K>& arr, const typename K::Vertex& crossing, const Edge& a, const Edge& b) {
+  const mk::Point p = K::approx(crossing);
   if (std::isfinite(p.x) && std::isfinite(p.y)) return;
   const auto at = [&](int id) {
     const mk::Point q = K::approx(arr.vertex(id));
@@ -50,7 +51,7 @@ void check_finite_crossing(const Arrangement<K>& arr, const Edge& a, const Edge&
 }
 
 template <Kernel K>
-void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::sweep) {
+void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::sweep, unsigned threads = 1) {
   auto& ea = arr.polygon[0].edges;
   auto& eb = arr.polygon[1].edges;
   std::array<EdgeInsertions, 2> inserted;  // per polygon, by edge index
@@ -66,35 +67,60 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
       }
     }
     const int na = static_cast<int>(ea.size());
-    std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
     const auto& pts = arr.points;
-    for_each_candidate_pair<K>(pts, arr.x_rank, items, true, search, [&](int i, int j) {
-      if (i > j) std::swap(i, j);  // i indexes A, j indexes B
-      const int jb = j - na;
-      const Edge& a = ea[i];
-      const Edge& b = eb[jb];
-      if (items[i].lo == items[j].lo && items[i].hi == items[j].hi) return;  // shared_edge
-      const auto rel = relate_segments_by_id<K>(pts, a.src, a.dst, b.src, b.dst);
-      if (rel.proper_crossing) {
+    // Each part of the search (see CandidatePairs) collects its crossings, constructed there,
+    // and its vertices on edges; the parts are then joined in their order, so that crossing
+    // ids do not depend on the number of threads.
+    struct Crossing {
+      int a, b;  // edge indices in A and B
+      typename K::Vertex vertex;
+    };
+    struct Found {
+      std::vector<Crossing> crossings;
+      std::array<EdgeInsertions, 2> inserted;
+    };
+    CandidatePairs<K> pairs(pts, arr.x_rank, items, true, search);
+    std::vector<Found> found(pairs.parts());
+    run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
+      Found& out = found[part];
+      pairs.for_each_in_part(part, [&](int i, int j) {
+        if (i > j) std::swap(i, j);  // i indexes A, j indexes B
+        const int jb = j - na;
+        const Edge& a = ea[i];
+        const Edge& b = eb[jb];
+        if (items[i].lo == items[j].lo && items[i].hi == items[j].hi) return;  // shared_edge
+        const auto rel = relate_segments_by_id<K>(pts, a.src, a.dst, b.src, b.dst);
+        if (rel.proper_crossing) {
+          out.crossings.push_back({i, jb, K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst])});
+          if constexpr (!K::is_exact) check_finite_crossing<K>(arr, out.crossings.back().vertex, a, b);
+          return;
+        }
+        // vertex_on_edge and collinear_overlap: endpoints strictly inside the other edge.
+        if (rel.c_inside_ab) out.inserted[0].add(i, b.src);
+        if (rel.d_inside_ab) out.inserted[0].add(i, b.dst);
+        if (rel.a_inside_cd) out.inserted[1].add(jb, a.src);
+        if (rel.b_inside_cd) out.inserted[1].add(jb, a.dst);
+      });
+    });
+    // One id per crossing point: edges of one polygon that coincide as sets cross the other
+    // polygon's edge at the same point, found once per edge (BRIEF.md section 2).
+    std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
+    for (Found& f : found) {
+      for (Crossing& c : f.crossings) {
+        const Edge& a = ea[c.a];
+        const Edge& b = eb[c.b];
         const auto key = std::make_pair(segment_key(a.src, a.dst), segment_key(b.src, b.dst));
         auto [it, fresh] = crossing_id.try_emplace(key, arr.num_vertices());
-        if (fresh) {
-          arr.crossings.push_back(K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst]));
-          if constexpr (!K::is_exact) check_finite_crossing<K>(arr, a, b);
-        }
-        inserted[0].add(i, it->second);
-        inserted[1].add(jb, it->second);
-        return;
+        if (fresh) arr.crossings.push_back(std::move(c.vertex));
+        inserted[0].add(c.a, it->second);
+        inserted[1].add(c.b, it->second);
       }
-      // vertex_on_edge and collinear_overlap: endpoints strictly inside the other edge.
-      if (rel.c_inside_ab) inserted[0].add(i, b.src);
-      if (rel.d_inside_ab) inserted[0].add(i, b.dst);
-      if (rel.a_inside_cd) inserted[1].add(jb, a.src);
-      if (rel.b_inside_cd) inserted[1].add(jb, a.dst);
-    });
+      std::vector<Crossing>().swap(f.crossings);
+      for (int g = 0; g < 2; ++g) inserted[g].append(std::move(f.inserted[g]));
+    }
   }
 
-  for (int g = 0; g < 2; ++g) {
+  run_tasks(threads_for(ea.size() + eb.size(), threads), 2, [&](std::size_t g) {
     PreparedPolygon& poly = arr.polygon[g];
     EdgeInsertions& ins = inserted[g];
     ins.group();
@@ -130,7 +156,7 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
       poly.cycle_first_fragment.push_back(static_cast<int>(fragments.size()));
     }
     poly.fragments = std::move(fragments);
-  }
+  });
 }
 
 }  // namespace mk

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "core/incidence.hpp"
 #include "core/locator.hpp"
+#include "core/parallel.hpp"
 #include "predicates/ray.hpp"
 
 namespace mk {
@@ -31,16 +32,12 @@ namespace detail {
 // depth when the fragment leaves the vertex (x's region is on its left) and lowers it when
 // it arrives.
 template <Kernel K>
-void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, const Incidence& inc,
-                const WindingLocator<K>& x_locator) {
+void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, const Incidence& inc, int anchor) {
   const PreparedPolygon& x = arr.polygon[xi];
   const FragmentEndTable& x_ends = inc.ends[xi];
   const DirectionOrder<K> order(arr.points);
   const int first = p.cycle_first_fragment[c];
   const int last = p.cycle_first_fragment[c + 1];
-  const Edge& e0 = p.edges[p.fragments[first].edge];
-  // [MK89 §4.3 step 1] One located point per ring: just left of its first fragment.
-  const int anchor = x_locator.winding(e0.src, e0.dst, Side::left);
   int left = anchor;
   // At a vertex where only the ring's own two fragments meet (count 2 in its own table),
   // those two fragment ends are known without reading them: the fragment arriving and the one leaving.
@@ -84,19 +81,34 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
 }  // namespace detail
 
 template <Kernel K>
-Incidence classify_fragments(Arrangement<K>& arr) {
+Incidence classify_fragments(Arrangement<K>& arr, unsigned threads = 1) {
   const int nv = arr.num_vertices();
-  Incidence inc{{FragmentEndTable(arr.polygon[0], nv), FragmentEndTable(arr.polygon[1], nv)}};
-  // Each locator answers one query per cycle of A and of B.
-  const std::size_t queries = arr.polygon[0].cycles.size() + arr.polygon[1].cycles.size();
-  const std::array<WindingLocator<K>, 2> locators{make_locator(arr, arr.polygon[0], queries),
-                                                  make_locator(arr, arr.polygon[1], queries)};
-  for (auto& p : arr.polygon) {
+  const std::size_t work = arr.polygon[0].fragments.size() + arr.polygon[1].fragments.size();
+  const unsigned t = threads_for(work, threads);
+  Incidence inc;
+  run_tasks(t, 2, [&](std::size_t p) { inc.ends[p] = FragmentEndTable(arr.polygon[p], nv); });
+  // [MK89 §4.3 step 1] One located point per ring: just left of its first fragment. Each
+  // locator answers the queries of every cycle of A and of B in one batch.
+  std::vector<LocatorQuery> queries;
+  for (const auto& p : arr.polygon) {
     for (int c = 0; c + 1 < static_cast<int>(p.cycle_first_fragment.size()); ++c) {
-      detail::walk_cycle(arr, p, c, 0, inc, locators[0]);
-      detail::walk_cycle(arr, p, c, 1, inc, locators[1]);
+      const Edge& e0 = p.edges[p.fragments[p.cycle_first_fragment[c]].edge];
+      queries.push_back({e0.src, e0.dst, Side::left});
     }
   }
+  std::array<std::vector<int>, 2> anchors;
+  run_tasks(t, 2, [&](std::size_t x) { anchors[x] = make_locator(arr, arr.polygon[x], queries.size()).windings(queries); });
+  // The two polygons' rings are walked on separate threads: a walk writes the depths of its
+  // own polygon's fragments only.
+  const int first_of_b = static_cast<int>(arr.polygon[0].cycle_first_fragment.size()) - 1;
+  run_tasks(t, 2, [&](std::size_t pi) {
+    PreparedPolygon& p = arr.polygon[pi];
+    const int q0 = pi == 0 ? 0 : first_of_b;
+    for (int c = 0; c + 1 < static_cast<int>(p.cycle_first_fragment.size()); ++c) {
+      detail::walk_cycle(arr, p, c, 0, inc, anchors[0][q0 + c]);
+      detail::walk_cycle(arr, p, c, 1, inc, anchors[1][q0 + c]);
+    }
+  });
   return inc;
 }
 

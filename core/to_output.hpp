@@ -250,7 +250,7 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true) {
   }
   if constexpr (K::is_exact) out.rounded_valid = is_valid_rounded_result<K, V>(r, rounded);
   if (!r.unbounded) {
-    const std::vector<int> parent = inclusion_parents(r.arrangement, r.cycles, &rounded);
+    const std::vector<int> parent = inclusion_parents(r.arrangement, r.cycles);
     std::vector<int> shell_of(r.cycles.size(), -1);
     for (std::size_t i = 0; i < r.cycles.size(); ++i) {
       if (r.cycles[i].vertices.size() < 3 || r.cycles[i].type != PolygonType::island) continue;

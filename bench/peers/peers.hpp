@@ -33,6 +33,9 @@ struct BoostGeometry {  // model::multi_polygon of counterclockwise closed polyg
 struct Clipper {  // Clipper 6.4 on 64-bit integers: coordinates scaled by a power of two
   static constexpr std::string_view name = "Clipper";
 };
+struct ClipperPolyTree {  // the same, its result as a PolyTree: holes assigned to their outer rings
+  static constexpr std::string_view name = "ClipperPolyTree";
+};
 struct CgalEpeck {  // Polygon_set_2 over Exact_predicates_exact_constructions_kernel
   static constexpr std::string_view name = "CgalEpeck";
 };

@@ -1,0 +1,313 @@
+// The searches behind the near-linear time of the operation, each against a brute-force
+// definition: candidate pairs (core/pairs.hpp) against every pair of meeting segments, the
+// batch locator (core/locator.hpp) against one ray scan per query, the shells of holes
+// (core/assemble.hpp) against exact point location in every island; and the operation on
+// several threads against one thread, bit for bit. [MK89 §4.3] [MK89 §2.2]
+// Preconditions: none; seeds are printed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "arithmetic/kernels/exact_kernel.hpp"
+#include "arithmetic/kernels/rational_kernel.hpp"
+#include "core/assemble.hpp"
+#include "core/boolean_op.hpp"
+#include "core/locator.hpp"
+#include "core/pairs.hpp"
+#include "core/prepare.hpp"
+#include "core/to_output.hpp"
+#include "generators.hpp"
+#include "oracle.hpp"
+
+namespace mk::test {
+namespace {
+
+using K = ExactKernel;
+
+Ring square_ring(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+
+// Rings whose segments meet in every way: grid stars, nested squares touching along their
+// sides, full-width stripes, a comb over a long edge, grid squares touching at corners.
+std::vector<Polygon> segment_soups(std::mt19937_64& rng) {
+  std::vector<Polygon> out;
+  for (int i = 0; i < 6; ++i) out.push_back(random_polygon(rng, false));
+  Polygon nested;
+  for (int k = 1; k <= 12; ++k) nested.rings.push_back(square_ring(-k, -k, k, k));
+  out.push_back(nested);
+  Polygon stripes;
+  for (int k = 0; k < 30; ++k) stripes.rings.push_back(square_ring(0, 2 * k, 100, 2 * k + 1 + (k % 3 == 0)));
+  out.push_back(stripes);
+  Polygon comb;
+  comb.rings.emplace_back();
+  comb.rings[0].push_back({0, 0});
+  for (int k = 0; k < 200; ++k) comb.rings[0].push_back({0.5 * k, k % 2 == 0 ? 1.0 : 2.0});
+  comb.rings[0].push_back({100, 0});
+  out.push_back(comb);
+  Polygon grid;
+  for (int j = 0; j < 14; ++j) {
+    for (int i = j % 2; i < 14; i += 2) grid.rings.push_back(square_ring(i, j, i + 1, j + 1));
+  }
+  out.push_back(grid);
+  return out;
+}
+
+// Point ids, x-ranks and sweep items of the rings of polygons a and b (groups 0 and 1).
+struct Items {
+  std::vector<K::Point> pts;
+  std::vector<int> x_rank;
+  std::vector<SweepItem> items;
+};
+
+Items items_of(const Polygon& a, const Polygon& b) {
+  Items out;
+  std::vector<Point> all;
+  for (const auto* p : {&a, &b}) {
+    for (const auto& r : p->rings) all.insert(all.end(), r.begin(), r.end());
+  }
+  std::sort(all.begin(), all.end(), [](const Point& u, const Point& w) { return u.x != w.x ? u.x < w.x : u.y < w.y; });
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  out.pts = all;
+  out.x_rank.resize(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) out.x_rank[i] = i == 0 ? 0 : out.x_rank[i - 1] + (all[i].x != all[i - 1].x);
+  const auto id = [&](const Point& q) {
+    return static_cast<int>(std::lower_bound(all.begin(), all.end(), q, [](const Point& u, const Point& w) {
+                              return u.x != w.x ? u.x < w.x : u.y < w.y;
+                            }) -
+                            all.begin());
+  };
+  int group = 0;
+  for (const auto* p : {&a, &b}) {
+    for (const auto& r : p->rings) {
+      for (std::size_t k = 0; k < r.size(); ++k) {
+        const int u = id(r[k]);
+        const int w = id(r[(k + 1) % r.size()]);
+        if (u != w) out.items.push_back(sweep_item(u, w, group, k > 0));
+      }
+    }
+    ++group;
+  }
+  return out;
+}
+
+bool boxes_meet(const Items& s, const SweepItem& a, const SweepItem& b) {
+  const auto& p = s.pts;
+  const auto y_range = [&](const SweepItem& it) { return std::minmax(p[it.lo].y, p[it.hi].y); };
+  const auto [a0, a1] = y_range(a);
+  const auto [b0, b1] = y_range(b);
+  return p[a.lo].x <= p[b.hi].x && p[b.lo].x <= p[a.hi].x && a0 <= b1 && b0 <= a1;
+}
+
+TEST(CandidatePairs, ReportEveryMeetingPairOnceAndNoPairOfApartBoxes) {
+  const std::uint64_t seed = 20261125;
+  std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+  std::mt19937_64 rng(seed);
+  const std::vector<Polygon> soups = segment_soups(rng);
+  int checked = 0;
+  for (std::size_t i = 0; i < soups.size(); ++i) {
+    for (std::size_t j = 0; j < soups.size(); ++j) {
+      if (j != i && j != (i + 3) % soups.size()) continue;
+      const Items s = items_of(soups[i], soups[j]);
+      for (const bool bipartite : {false, true}) {
+        CandidatePairs<K> pairs(s.pts, s.x_rank, s.items, bipartite, PairSearch::sweep);
+        std::set<std::pair<int, int>> found;
+        for (std::size_t part = 0; part < pairs.parts(); ++part) {
+          pairs.for_each_in_part(part, [&](int a, int b) {
+            const auto key = std::minmax(a, b);
+            EXPECT_TRUE(found.insert(key).second) << "pair reported twice: " << a << " " << b;
+            EXPECT_TRUE(boxes_meet(s, s.items[a], s.items[b]));
+            if (bipartite) {
+              EXPECT_NE(s.items[a].group, s.items[b].group);
+            }
+          });
+        }
+        // Every two segments that meet (but consecutive segments of one ring at their shared
+        // end) are among the pairs.
+        for (int a = 0; a < static_cast<int>(s.items.size()); ++a) {
+          for (int b = a + 1; b < static_cast<int>(s.items.size()); ++b) {
+            const SweepItem& x = s.items[a];
+            const SweepItem& y = s.items[b];
+            if (bipartite && x.group == y.group) continue;
+            const auto rel = relate_segments_by_id<K>(s.pts, x.lo, x.hi, y.lo, y.hi);
+            const bool same = x.lo == y.lo && x.hi == y.hi;
+            if (!rel.proper_crossing && !rel.touches() && !same) continue;
+            ++checked;
+            EXPECT_TRUE(found.count({a, b})) << "soups " << i << "," << j << " missed segments " << a << " " << b;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+TEST(WindingLocator, BatchSweepEqualsScanPerQuery) {
+  const std::uint64_t seed = 41;
+  std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+  std::mt19937_64 rng(seed);
+  const std::vector<Polygon> soups = segment_soups(rng);
+  int compared = 0;
+  for (std::size_t i = 0; i < soups.size(); ++i) {
+    for (std::size_t j = 0; j < soups.size(); ++j) {
+      if (j != (i + 1) % soups.size()) continue;
+      // Located: polygon i (prepared, so its edges do not cross); queries beside every edge
+      // of both polygons, on both sides.
+      Arrangement<K> arr;
+      try {
+        arr = prepare<K>(soups[i], soups[j]);
+      } catch (const InvalidInput&) {
+        continue;  // a soup whose own edges cross (random stars may)
+      }
+      std::vector<Edge> edges;
+      for (const auto& c : arr.polygon[0].cycles) {
+        for (std::size_t k = 0; k < c.size(); ++k) edges.push_back({c[k], c[(k + 1) % c.size()]});
+      }
+      std::vector<LocatorQuery> queries;
+      for (const auto& poly : arr.polygon) {
+        for (const auto& c : poly.cycles) {
+          for (std::size_t k = 0; k < c.size(); ++k) {
+            queries.push_back({c[k], c[(k + 1) % c.size()], Side::left});
+            queries.push_back({c[(k + 1) % c.size()], c[k], Side::right});
+          }
+        }
+      }
+      const WindingLocator<K> locator(arr, edges);
+      const std::vector<int> windings = locator.windings(queries);
+      const std::vector<int> parities = locator.crossing_parities(queries);
+      for (std::size_t q = 0; q < queries.size(); ++q) {
+        const LocatorQuery& x = queries[q];
+        ASSERT_EQ(windings[q], locator.winding(x.v, x.t, x.side)) << "soup " << i << " query " << q;
+        ASSERT_EQ(parities[q] % 2, locator.crossings(x.v, x.t, x.side) % 2) << "soup " << i << " query " << q;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 2000);
+}
+
+// Concentric square annuli, each shifted a little at random, against the same: results with
+// many islands inside holes inside islands.
+Polygon annuli(std::mt19937_64& rng, int n, double shift) {
+  std::uniform_int_distribution<int> jitter(0, 2);
+  Polygon p;
+  for (int k = 0; k < n; ++k) {
+    const double s = 4 * k + shift + 0.25 * jitter(rng);
+    p.rings.push_back(square_ring(-s - 3, -s - 3, s + 3, s + 3));
+    Ring hole = square_ring(-s - 1, -s - 1, s + 1, s + 1);
+    std::reverse(hole.begin(), hole.end());
+    p.rings.push_back(hole);
+  }
+  return p;
+}
+
+TEST(InclusionParents, ShellIsTheInnermostIslandAroundEachHole) {
+  const std::uint64_t seed = 7;
+  std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+  std::mt19937_64 rng(seed);
+  int holes = 0;
+  for (int round = 0; round < 12; ++round) {
+    const Polygon a = annuli(rng, 6, 0);
+    const Polygon b = annuli(rng, 6, round % 2 == 0 ? 1.5 : 0.75);
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
+                               Operation::symmetric_difference}) {
+      const auto r = boolean_op<RationalKernel>(a, b, Options{op});
+      const std::vector<int> parent = inclusion_parents(r.arrangement, r.cycles);
+      std::vector<QRing> rings(r.cycles.size());
+      for (std::size_t c = 0; c < r.cycles.size(); ++c) {
+        for (const int v : r.cycles[c].vertices) rings[c].push_back(r.vertex(v));
+      }
+      const auto area = [&](std::size_t c) {
+        Q twice = 0;
+        for (std::size_t k = 0; k < rings[c].size(); ++k) twice += cross(QPoint{0, 0}, rings[c][k], rings[c][(k + 1) % rings[c].size()]);
+        return Q(abs(twice));
+      };
+      for (std::size_t h = 0; h < r.cycles.size(); ++h) {
+        if (r.cycles[h].type != PolygonType::hole || rings[h].size() < 3) continue;
+        // The midpoint of the hole's first edge lies on no other cycle (they share no edge).
+        const QPoint m{(rings[h][0].x + rings[h][1].x) / 2, (rings[h][0].y + rings[h][1].y) / 2};
+        int expected = -1;
+        for (std::size_t c = 0; c < r.cycles.size(); ++c) {
+          if (r.cycles[c].type != PolygonType::island || rings[c].size() < 3 ||
+              locate(std::vector<QRing>{rings[c]}, PolygonType::island, m) != Location::inside) {
+            continue;
+          }
+          if (expected < 0 || area(c) < area(static_cast<std::size_t>(expected))) expected = static_cast<int>(c);
+        }
+        EXPECT_EQ(parent[h], expected) << "round " << round << " op " << operation_name(op) << " hole " << h;
+        ++holes;
+      }
+    }
+  }
+  EXPECT_GT(holes, 100);
+}
+
+// Inputs of tens of thousands of vertices, so that every parallel phase runs on threads
+// (core/parallel.hpp: kParallelWork).
+std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> large_inputs() {
+  std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> out;
+  const auto blob = [](int n, double cx, double cy) {
+    Ring r;
+    for (int i = 0; i < n; ++i) {
+      const double t = 2 * std::numbers::pi * i / n;
+      const double radius = 100 * (1 + 0.1 * std::sin(5 * t));
+      r.push_back({cx + radius * std::cos(t), cy + radius * std::sin(t)});
+    }
+    return Polygon{{r}, PolygonType::island};
+  };
+  out.push_back({"blob", {blob(12000, 0, 0), blob(12000, 30, 10)}});
+  Polygon grid_a, grid_b;
+  for (int j = 0; j < 80; ++j) {
+    for (int i = j % 2; i < 80; i += 2) {
+      grid_a.rings.push_back(square_ring(i, j, i + 1, j + 1));
+      grid_b.rings.push_back(square_ring(i + 0.5, j + 0.5, i + 1.5, j + 1.5));
+    }
+  }
+  out.push_back({"checkerboard_offset", {grid_a, grid_b}});
+  std::mt19937_64 rng(3);
+  out.push_back({"annuli", {annuli(rng, 1100, 0), annuli(rng, 1100, 1.5)}});
+  std::uniform_real_distribution<double> u(0, 1);
+  const auto star = [&](int n, double cx, double cy) {
+    std::vector<double> angles(n);
+    for (auto& t : angles) t = 2 * std::numbers::pi * u(rng);
+    std::sort(angles.begin(), angles.end());
+    Ring r;
+    for (const double t : angles) {
+      const double radius = 97 + 3 * u(rng);  // thousands of crossings, not millions
+      r.push_back({cx + radius * std::cos(t), cy + radius * std::sin(t)});
+    }
+    return Polygon{{r}, PolygonType::island};
+  };
+  out.push_back({"star", {star(9000, 0, 0), star(9000, 32, 0)}});
+  return out;
+}
+
+TEST(Threads, ResultsAreTheSameBitForBitOnAnyNumberOfThreads) {
+  for (const auto& [name, inputs] : large_inputs()) {
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::symmetric_difference}) {
+      std::vector<std::string> seen;
+      for (const unsigned threads : {1u, 2u, 5u}) {
+        Options options{op};
+        options.threads = threads;
+        const auto r = boolean_op<K>(inputs.first, inputs.second, options);
+        const Output out = to_output<K, K>(r);
+        std::string text;
+        for (const auto& c : r.cycles) {
+          text += c.type == PolygonType::island ? "I" : "H";
+          for (const int v : c.vertices) {
+            const auto e = K::exact_coordinates(r.vertex(v));
+            text += " " + e[0] + "," + e[1];
+          }
+          text += "\n";
+        }
+        for (const auto& p : out.polygons) text += "polygon with " + std::to_string(p.holes.size()) + " holes\n";
+        seen.push_back(text);
+        EXPECT_EQ(seen.front(), text) << name << " " << operation_name(op) << " on " << threads << " threads";
+      }
+      EXPECT_FALSE(seen.front().empty());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mk::test
