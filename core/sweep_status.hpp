@@ -10,11 +10,19 @@
 
 #include <memory_resource>
 #include <set>
+#include <type_traits>
 #include <vector>
 
 #include "kernel/kernel.hpp"
 
 namespace mk {
+
+// What a sweep asks of geometry: a point type and the orientation of three points (a kernel
+// has both; so do the frames of snap rounding's sweeps).
+template <class K>
+concept OrientationPredicates = requires(const typename K::Point& p) {
+  { K::orient2d(p, p, p) } -> std::same_as<Sign>;
+};
 
 // A segment between two point ids, lo < hi.
 struct SweepSegment {
@@ -40,7 +48,7 @@ struct SweepEntry {
 // with the other's supporting line at that end (and at its right end when the left end lies
 // on that line), which is their order wherever both meet the sweep line. Two segments on one
 // line compare equal. A point compares with a segment by the side of its line it lies on.
-template <Kernel K>
+template <OrientationPredicates K>
 struct BelowOnSweepLine {
   using is_transparent = void;
   using Entry = SweepEntry<typename K::Point>;
@@ -71,15 +79,15 @@ struct BelowOnSweepLine {
 
 }  // namespace detail
 
-// The status: segments in a set whose nodes come from a monotonic arena (one sweep
-// allocates them all and frees them at once), with each segment's position kept so that it
-// leaves without a search.
-template <Kernel K>
+// The status: segments in a set whose nodes come from a pool (one sweep allocates them and
+// frees them at once), with each segment's position kept so that it leaves without a
+// search. With `Multi`, segments on one line (collinear overlaps) may be in together.
+template <OrientationPredicates K, bool Multi = false>
 class SweepStatus {
  public:
   using Order = detail::BelowOnSweepLine<K>;
   using Entry = typename Order::Entry;
-  using Set = std::pmr::set<Entry, Order>;
+  using Set = std::conditional_t<Multi, std::pmr::multiset<Entry, Order>, std::pmr::set<Entry, Order>>;
   using Iterator = typename Set::const_iterator;
 
   SweepStatus(const std::vector<typename K::Point>& points, const std::vector<SweepSegment>& segments)
@@ -88,11 +96,17 @@ class SweepStatus {
   // Inserts segment i; the iterator is end() when a segment on the same line is already in.
   Iterator insert(int i) {
     const SweepSegment& s = segments_[static_cast<std::size_t>(i)];
-    auto [it, fresh] = set_.insert(
-        Entry{i, s.lo, s.hi, points_[static_cast<std::size_t>(s.lo)], points_[static_cast<std::size_t>(s.hi)]});
-    if (!fresh) return end();
-    where_[static_cast<std::size_t>(i)] = it;
-    return it;
+    const Entry e{i, s.lo, s.hi, points_[static_cast<std::size_t>(s.lo)], points_[static_cast<std::size_t>(s.hi)]};
+    if constexpr (Multi) {
+      const auto it = set_.insert(e);
+      where_[static_cast<std::size_t>(i)] = it;
+      return it;
+    } else {
+      auto [it, fresh] = set_.insert(e);
+      if (!fresh) return end();
+      where_[static_cast<std::size_t>(i)] = it;
+      return it;
+    }
   }
   // Puts segment j, which continues segment i to the right from i's right end, in i's place
   // (the order is unchanged where no segment crosses the two at their common point).
