@@ -17,10 +17,12 @@
 #include <compare>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 
 #include "arithmetic/adaptive.hpp"
 #include "arithmetic/interval_filter.hpp"
@@ -32,36 +34,89 @@
 
 namespace mk {
 
-// An exact point: a pair of doubles (exact == nullptr, and the box is that point), or the
-// rational point *exact inside the box [x_lo, x_hi] x [y_lo, y_hi].
+// A rational number made the first time it is read (most predicates are decided by the
+// intervals around it).
+class LazyRational {
+ public:
+  explicit LazyRational(mpq_class v) : value_(std::move(v)), ready_(true) {}
+  explicit LazyRational(std::function<mpq_class()> make) : make_(std::move(make)) {}
+  const mpq_class& get() const {
+    if (!ready_) {
+      value_ = make_();
+      value_.canonicalize();
+      ready_ = true;
+      make_ = nullptr;
+    }
+    return value_;
+  }
+
+ private:
+  mutable std::function<mpq_class()> make_;
+  mutable mpq_class value_;
+  mutable bool ready_ = false;
+};
+
+class SnapGrid;
+
+// Where a coordinate's exact value comes from when its interval does not decide a predicate:
+// nothing (the interval is one double, the value), a lazily made rational, or a grid point
+// (half_steps times half the spacing of `grid`).
+struct ExactCoordinate {
+  const LazyRational* lazy = nullptr;
+  const SnapGrid* grid = nullptr;
+  std::int64_t half_steps = 0;
+  bool is_double() const { return lazy == nullptr && grid == nullptr; }
+  inline mpq_class value(double as_double) const;
+};
+
+// An exact point: each coordinate inside an interval of doubles ([x_lo, x_hi], [y_lo, y_hi]),
+// which is the value itself when the coordinate is a double.
 struct SnapPoint {
   double x_lo = 0, x_hi = 0, y_lo = 0, y_hi = 0;
-  const RationalPoint* exact = nullptr;
+  ExactCoordinate qx, qy;
 
-  static SnapPoint of(const Point& p) { return {p.x, p.x, p.y, p.y, nullptr}; }
-  // A rational point kept by reference (q must outlive the SnapPoint); exact doubles
-  // become a pair of doubles.
-  static SnapPoint of(const RationalPoint& q) {
-    const auto bounds = [](const mpq_class& v, double& lo, double& hi) {
-      const double d = nearest_double(v);
-      if (std::isfinite(d) && cmp(mpq_class(d), v) == 0) {
-        lo = hi = d;
-        return true;
-      }
-      lo = std::nextafter(d, -HUGE_VAL);  // the nearest double is within half an ulp
-      hi = std::nextafter(d, HUGE_VAL);
-      return false;
-    };
+  static SnapPoint of(const Point& p) { return {p.x, p.x, p.y, p.y, {}, {}}; }
+  // The interval around rational v: a point when v is a double.
+  static bool is_double(const mpq_class& v, double& lo, double& hi) {
+    const double d = nearest_double(v);
+    if (std::isfinite(d) && cmp(mpq_class(d), v) == 0) {
+      lo = hi = d;
+      return true;
+    }
+    lo = std::nextafter(d, -HUGE_VAL);  // the nearest double is within half an ulp
+    hi = std::nextafter(d, HUGE_VAL);
+    return false;
+  }
+  bool is_double() const { return qx.is_double() && qy.is_double(); }
+  mpq_class ex() const { return qx.value(x_lo); }
+  mpq_class ey() const { return qy.value(y_lo); }
+  Point approx() const {
+    return {qx.is_double() ? x_lo : nearest_double(ex()), qy.is_double() ? y_lo : nearest_double(ey())};
+  }
+};
+
+// Exact values kept for snap points to refer to (their addresses stay put).
+class SnapPointStore {
+ public:
+  // The point q, exactly.
+  SnapPoint add(const RationalPoint& q) {
     SnapPoint p;
-    const bool x_exact = bounds(q.x, p.x_lo, p.x_hi);
-    const bool y_exact = bounds(q.y, p.y_lo, p.y_hi);
-    p.exact = x_exact && y_exact ? nullptr : &q;
+    if (!SnapPoint::is_double(q.x, p.x_lo, p.x_hi)) p.qx.lazy = &values_.emplace_back(q.x);
+    if (!SnapPoint::is_double(q.y, p.y_lo, p.y_hi)) p.qy.lazy = &values_.emplace_back(q.y);
     return p;
   }
-  bool is_double() const { return exact == nullptr; }
-  mpq_class qx() const { return exact ? exact->x : mpq_class(x_lo); }
-  mpq_class qy() const { return exact ? exact->y : mpq_class(y_lo); }
-  Point approx() const { return exact ? Point{nearest_double(exact->x), nearest_double(exact->y)} : Point{x_lo, y_lo}; }
+  // A point known inside a box, made exactly (coordinate by coordinate) only when needed.
+  SnapPoint add(double x_lo, double x_hi, double y_lo, double y_hi, std::function<mpq_class()> x,
+                std::function<mpq_class()> y) {
+    SnapPoint p{x_lo, x_hi, y_lo, y_hi, {}, {}};
+    if (x_lo != x_hi) p.qx.lazy = &values_.emplace_back(std::move(x));
+    if (y_lo != y_hi) p.qy.lazy = &values_.emplace_back(std::move(y));
+    return p;
+  }
+  const LazyRational* add_value(std::function<mpq_class()> v) { return &values_.emplace_back(std::move(v)); }
+
+ private:
+  std::deque<LazyRational> values_;
 };
 
 // The predicates on snap points the sweeps need (the part of the kernel concept they use).
@@ -70,14 +125,14 @@ struct SnapPredicates {
   static Sign compare_x(const SnapPoint& a, const SnapPoint& b) {
     if (a.x_hi < b.x_lo) return Sign::negative;
     if (b.x_hi < a.x_lo) return Sign::positive;
-    if (a.is_double() && b.is_double()) return Sign::zero;
-    return sign_of(cmp(a.qx(), b.qx()));
+    if (a.qx.is_double() && b.qx.is_double()) return Sign::zero;  // equal doubles
+    return sign_of(cmp(a.ex(), b.ex()));
   }
   static Sign compare_y(const SnapPoint& a, const SnapPoint& b) {
     if (a.y_hi < b.y_lo) return Sign::negative;
     if (b.y_hi < a.y_lo) return Sign::positive;
-    if (a.is_double() && b.is_double()) return Sign::zero;
-    return sign_of(cmp(a.qy(), b.qy()));
+    if (a.qy.is_double() && b.qy.is_double()) return Sign::zero;
+    return sign_of(cmp(a.ey(), b.ey()));
   }
   // Sign of (b - a) x (c - a): adaptive on doubles; an interval filter on the boxes, then
   // rationals, otherwise.
@@ -98,8 +153,8 @@ struct SnapPredicates {
     }
     if (lo > 0) return Sign::positive;
     if (hi < 0) return Sign::negative;
-    const mpq_class ax = a.qx(), ay = a.qy();
-    return sign_of(sgn((b.qx() - ax) * (c.qy() - ay) - (b.qy() - ay) * (c.qx() - ax)));
+    const mpq_class ax = a.ex(), ay = a.ey();
+    return sign_of(sgn((b.ex() - ax) * (c.ey() - ay) - (b.ey() - ay) * (c.ex() - ax)));
   }
 };
 
@@ -211,6 +266,8 @@ class SnapGrid {
   }
 
   const mpq_class& spacing() const { return spacing_; }
+  double spacing_lo() const { return g_lo_; }
+  double spacing_hi() const { return g_hi_; }
   std::optional<int> exponent() const { return exponent_; }
   bool is_power_of_two() const { return exponent_.has_value(); }
   // The spacing as text: "2^-52" for powers of two, else the reduced rational "p/q".
@@ -249,15 +306,12 @@ class SnapGrid {
   }
   // The index of a coordinate known to lie in [lo, hi] (exact when lo == hi): the index is
   // monotone, so equal indices at both ends decide it.
-  std::int64_t index_of(double lo, double hi, const mpq_class* exact) const {
+  std::int64_t index_of(double lo, double hi, const ExactCoordinate& exact) const {
     const std::int64_t a = index_of(lo);
     if (lo == hi || a == index_of(hi)) return a;
-    return index_of(*exact);
+    return index_of(exact.value(lo));
   }
-  Pixel pixel_of(const SnapPoint& p) const {
-    return {index_of(p.x_lo, p.x_hi, p.exact ? &p.exact->x : nullptr),
-            index_of(p.y_lo, p.y_hi, p.exact ? &p.exact->y : nullptr)};
-  }
+  Pixel pixel_of(const SnapPoint& p) const { return {index_of(p.x_lo, p.x_hi, p.qx), index_of(p.y_lo, p.y_hi, p.qy)}; }
   // Throws std::invalid_argument when a coordinate of magnitude `largest` has a pixel index
   // beyond 2^53 (a grid far finer than the doubles there).
   void check_range(double largest) const {
@@ -275,67 +329,138 @@ class SnapGrid {
     half_odd.canonicalize();
     return spacing_ * half_odd;
   }
-  // The same as doubles when they are exactly doubles.
+  // The same as doubles when they are exactly doubles (for spacings that are not powers of
+  // two, found only when the spacing's numerator and denominator are small).
   std::optional<double> centre_double(std::int64_t k) const {
     if (exponent_) return std::ldexp(static_cast<double>(k), *exponent_);  // |k| <= 2^53: exact
-    return exact_double(centre(k));
+    double d = 0;
+    return quotient(k, 1, d) ? std::optional<double>(d) : std::nullopt;
   }
   std::optional<double> boundary_double(std::int64_t k) const {
     if (exponent_ && *exponent_ - 1 >= -1074 && std::abs(2 * k - 1) < max_index) {
       return std::ldexp(static_cast<double>(2 * k - 1), *exponent_ - 1);
     }
     if (exponent_) return std::nullopt;
-    return exact_double(boundary(k));
+    double d = 0;
+    return quotient(2 * k - 1, 2, d) ? std::optional<double>(d) : std::nullopt;
+  }
+  // The exact value of h g / 2.
+  mpq_class half_steps(std::int64_t h) const {
+    mpq_class v(mpz_class(static_cast<long>(h)), mpz_class(2));
+    v.canonicalize();
+    return spacing_ * v;
+  }
+  // An interval [lo, hi] of doubles holding h g / 2; true when it is that value exactly.
+  bool half_steps_interval(std::int64_t h, double& lo, double& hi) const {
+    const double hd = static_cast<double>(h);  // exact below 2^53, else within half an ulp
+    const bool h_exact = std::llabs(h) <= max_index;
+    if (exponent_ && h_exact && *exponent_ - 1 >= -1074) {
+      lo = hi = std::ldexp(hd, *exponent_ - 1);
+      return true;
+    }
+    if (small_ && h_exact && std::fabs(hd * p_) < 0x1p53 && 2 * q_ < 0x1p53) {
+      const double num = hd * p_, den = 2 * q_;
+      const double d = num / den;  // correctly rounded
+      if (std::fma(-d, den, num) == 0) {
+        lo = hi = d;
+        return true;
+      }
+      lo = std::nextafter(d, -HUGE_VAL);
+      hi = std::nextafter(d, HUGE_VAL);
+      return false;
+    }
+    using I = interval_filter::Interval;
+    RoundingGuard upward(FE_UPWARD);
+    const auto in = [](double l, double u) { return I(RoundingGuard::opaque(l), RoundingGuard::opaque(u)); };
+    const I v = in(std::nextafter(hd, -HUGE_VAL), std::nextafter(hd, HUGE_VAL)) * in(g_lo_, g_hi_) / in(2, 2);
+    volatile double l = v.lower(), u = v.upper();
+    lo = l;
+    hi = u;
+    return false;
+  }
+  // The nearest double to k g (the written coordinate of a centre).
+  double nearest_centre(std::int64_t k) const {
+    if (const auto d = centre_double(k)) return *d;
+    double d = 0;
+    if (small_ && std::fabs(static_cast<double>(k) * p_) < 0x1p53) {
+      quotient(k, 1, d);  // IEEE division of exact doubles: correctly rounded
+      return d;
+    }
+    return nearest_double(centre(k));
   }
 
  private:
-  static std::optional<double> exact_double(const mpq_class& v) {
-    const double d = nearest_double(v);
-    if (std::isfinite(d) && cmp(mpq_class(d), v) == 0) return d;
-    return std::nullopt;
+  // n p / (m q) rounded to nearest, for a spacing p / q with both exact doubles and |n p|
+  // below 2^53: true when that quotient is exact (the remainder of a correctly rounded
+  // division is a double, so one fma finds it).
+  bool quotient(std::int64_t n, int m, double& d) const {
+    if (!small_) return false;
+    const double num = static_cast<double>(n) * p_;  // exact below 2^53
+    const double den = m * q_;
+    if (!(std::fabs(num) < 0x1p53) || !(den < 0x1p53)) return false;
+    d = num / den;
+    return std::fma(-d, den, num) == 0;
   }
   void finish() {
     spacing_.canonicalize();
     g_ = nearest_double(spacing_);
+    g_lo_ = std::nextafter(g_, 0.0);
+    g_hi_ = std::nextafter(g_, HUGE_VAL);
+    const mpz_class& num = spacing_.get_num();
+    const mpz_class& den = spacing_.get_den();
+    small_ = mpz_sizeinbase(num.get_mpz_t(), 2) <= 52 && mpz_sizeinbase(den.get_mpz_t(), 2) <= 52;
+    if (small_) {
+      p_ = num.get_d();
+      q_ = den.get_d();
+    }
   }
   mpq_class spacing_;
-  double g_ = 0;
+  double g_ = 0, g_lo_ = 0, g_hi_ = 0;  // the spacing rounded to nearest, and a box around it
+  bool small_ = false;                   // numerator p_ and denominator q_ are exact doubles
+  double p_ = 0, q_ = 0;
   std::optional<int> exponent_;
 };
 
-// Points on the grid made on demand (centres and pixel corners), kept for the lifetime of
-// this store so that snap points may refer to them.
+// Grid points as snap points: coordinates k g (centres) and (k - 1/2) g (boundaries), each
+// a double when it is one, else an interval with the grid to make it exactly.
 class GridPoints {
  public:
   explicit GridPoints(const SnapGrid& grid) : grid_(grid) {}
   const SnapGrid& grid() const { return grid_; }
   // The centre of pixel p.
-  SnapPoint centre(const Pixel& p) { return make(grid_.centre_double(p.x), grid_.centre_double(p.y), p, false); }
+  SnapPoint centre(const Pixel& p) const { return point(coordinate(2 * p.x), coordinate(2 * p.y)); }
   // The corner of pixel p at its low (0) or high (1) side along each axis.
-  SnapPoint corner(const Pixel& p, int dx, int dy) {
-    const Pixel k{p.x + dx, p.y + dy};
-    return make(grid_.boundary_double(k.x), grid_.boundary_double(k.y), k, true);
+  SnapPoint corner(const Pixel& p, int dx, int dy) const {
+    return point(coordinate(2 * (p.x + dx) - 1), coordinate(2 * (p.y + dy) - 1));
   }
 
  private:
-  SnapPoint make(std::optional<double> x, std::optional<double> y, const Pixel& k, bool boundary) {
-    if (x && y) return SnapPoint::of(Point{*x, *y});
-    store_.push_back({boundary ? grid_.boundary(k.x) : grid_.centre(k.x), boundary ? grid_.boundary(k.y) : grid_.centre(k.y)});
-    return SnapPoint::of(store_.back());
+  struct Coordinate {
+    double lo, hi;
+    ExactCoordinate exact;
+  };
+  static SnapPoint point(const Coordinate& x, const Coordinate& y) { return {x.lo, x.hi, y.lo, y.hi, x.exact, y.exact}; }
+  Coordinate coordinate(std::int64_t half_steps) const {
+    Coordinate c{0, 0, {}};
+    if (grid_.half_steps_interval(half_steps, c.lo, c.hi)) return c;
+    c.exact.grid = &grid_;
+    c.exact.half_steps = half_steps;
+    return c;
   }
-  SnapGrid grid_;
-  std::deque<RationalPoint> store_;
+  const SnapGrid& grid_;
 };
 
 // The snap geometry core/hot_pixels.hpp and core/snap_round.hpp work with: the predicates,
 // a grid, and the grid points made along the way.
 class SnapGeometry : public SnapPredicates {
  public:
-  explicit SnapGeometry(const SnapGrid& grid) : points_(grid) {}
-  const SnapGrid& grid() const { return points_.grid(); }
+  explicit SnapGeometry(const SnapGrid& grid) : grid_(grid), points_(grid_) {}
+  SnapGeometry(const SnapGeometry&) = delete;  // points_ refers to grid_
+  SnapGeometry& operator=(const SnapGeometry&) = delete;
+  const SnapGrid& grid() const { return grid_; }
   Pixel pixel_of(const SnapPoint& p) const { return points_.grid().pixel_of(p); }
-  SnapPoint centre(const Pixel& p) { return points_.centre(p); }
-  SnapPoint corner(const Pixel& p, int dx, int dy) { return points_.corner(p, dx, dy); }
+  SnapPoint centre(const Pixel& p) const { return points_.centre(p); }
+  SnapPoint corner(const Pixel& p, int dx, int dy) const { return points_.corner(p, dx, dy); }
   // The order of the centres of pixels p and q along the direction from u to w: the sign of
   // (centre(p) - centre(q)) . (w - u), in units of the spacing.
   static Sign compare_along(const SnapPoint& u, const SnapPoint& w, const Pixel& p, const Pixel& q) {
@@ -358,11 +483,18 @@ class SnapGeometry : public SnapPredicates {
       if (hi < 0) return Sign::negative;
     }
     const mpq_class ex(mpz_class(static_cast<long>(dx))), ey(mpz_class(static_cast<long>(dy)));
-    return sign_of(sgn(ex * (w.qx() - u.qx()) + ey * (w.qy() - u.qy())));
+    return sign_of(sgn(ex * (w.ex() - u.ex()) + ey * (w.ey() - u.ey())));
   }
 
  private:
+  SnapGrid grid_;
   GridPoints points_;
 };
+
+inline mpq_class ExactCoordinate::value(double as_double) const {
+  if (lazy) return lazy->get();
+  if (grid) return grid->half_steps(half_steps);
+  return mpq_class(as_double);
+}
 
 }  // namespace mk

@@ -228,7 +228,7 @@ std::vector<std::vector<int>> hot_pixels_met(G& g, const std::vector<typename G:
   detail::side_sweep<detail::SweepFrame<G, true>>(g, pts, pixel_of_point, segments, hot, emit);
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  for (const auto [s, h] : candidates) {
+  for (const auto& [s, h] : candidates) {
     const auto [u, w] = segments[static_cast<std::size_t>(s)];
     const Px& pu = pixel_of_point[static_cast<std::size_t>(u)];
     const Px& pw = pixel_of_point[static_cast<std::size_t>(w)];
