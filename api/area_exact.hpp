@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "arithmetic/exact_accumulator.hpp"
@@ -109,7 +110,19 @@ inline Homogeneous homogeneous(const ExactVertex& v) {
   return h;
 }
 
-inline Homogeneous homogeneous(const RationalPoint& p) {
+// A rational point of any number type as GMP rationals (through its exact text).
+template <class Q>
+RationalPoint as_mpq(const BasicRationalPoint<Q>& p) {
+  if constexpr (std::is_same_v<Q, mpq_class>) {
+    return p;
+  } else {
+    return {mpq_class(RationalNumber<Q>::text(p.x)), mpq_class(RationalNumber<Q>::text(p.y))};
+  }
+}
+
+template <class Q>
+Homogeneous homogeneous(const BasicRationalPoint<Q>& q) {
+  const RationalPoint p = as_mpq(q);
   Homogeneous h;
   mpz_lcm(h.d.get_mpz_t(), p.x.get_den_mpz_t(), p.y.get_den_mpz_t());
   h.x = p.x.get_num() * (h.d / p.x.get_den());
@@ -227,10 +240,16 @@ inline bool is_safe_double(const Point& p) {
   return ExactAccumulator::is_safe_factor(p.x) && ExactAccumulator::is_safe_factor(p.y);
 }
 inline bool is_safe_double(const ExactVertex& v) { return !v.is_crossing && is_safe_double(v.a0); }
-inline bool is_safe_double(const RationalPoint&) { return false; }
+template <class Q>
+bool is_safe_double(const BasicRationalPoint<Q>&) {
+  return false;
+}
 inline Point as_point(const Point& p) { return p; }
 inline Point as_point(const ExactVertex& v) { return v.a0; }
-inline Point as_point(const RationalPoint&) { return {}; }  // never a safe double
+template <class Q>
+Point as_point(const BasicRationalPoint<Q>&) {
+  return {};  // never a safe double
+}
 
 // Twice the signed area of one cycle, times `sign`, split into what the expansion takes
 // (terms between two safe doubles) and fractions (each maximal run of other terms, summed

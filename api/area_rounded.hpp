@@ -31,7 +31,9 @@ struct Approx {
 
 inline Approx approximate(const Point& p) { return {p.x, 0, p.y, 0, 0, true}; }
 
-inline Approx approximate(const RationalPoint& p) {
+template <class Q>
+Approx approximate(const BasicRationalPoint<Q>& q) {
+  const RationalPoint p = as_mpq(q);
   Approx a;
   a.xh = nearest_double(p.x);
   a.yh = nearest_double(p.y);

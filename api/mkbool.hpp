@@ -22,6 +22,9 @@ std::vector<std::string_view> kernel_names();
 // The kernel used when none is named: the fastest exact kernel built.
 std::string_view default_kernel();
 bool is_exact_kernel(std::string_view name);
+// Kernels that repeat another with a different number type (rational-mp, rational-cpp: the
+// rational kernel over Boost.Multiprecision's rationals): the same results, another cost.
+bool is_number_type_variant(std::string_view name);
 
 struct BooleanOptions {
   Operation op = Operation::intersection;
@@ -42,12 +45,14 @@ struct BooleanStats {
   std::size_t vertices_in = 0;
   std::size_t crossings = 0;
   std::size_t vertices_out = 0;
-  // Area of the result (regular part), correctly rounded to the nearest double (+inf when
-  // it exceeds the largest double); exact kernels also give it as a reduced rational "p/q"
-  // or integer "p". Empty when unbounded or not asked for (BooleanOptions::area,
-  // area_exact).
+  // Area of the result (regular part), correctly rounded to the nearest double; exact
+  // kernels also give it as a reduced rational "p/q" or integer "p". Empty when unbounded
+  // or not asked for (BooleanOptions::area, area_exact). An area larger than the largest
+  // double (coordinates beyond about 1.3e154 can make one) is +infinity, as IEEE rounding
+  // gives it, and area_beyond_double says so; area_exact still holds it exactly. Never NaN.
   std::optional<double> area;
   std::optional<std::string> area_exact;
+  bool area_beyond_double = false;
 };
 
 struct BooleanOutput {

@@ -198,19 +198,27 @@ inline int cross_sign_expansion(const CrossInput& in, PredicateKind kind) {
   const double detsum = std::fabs(left.hi) + std::fabs(right.hi);
   const std::array<double, 4> b = two_two_diff(left.hi, left.lo, right.hi, right.lo);
   double det = estimate(b);
-  if (std::fabs(det) > bound_b * detsum) return sign_of(det);
+  if (std::fabs(det) > bound_b * detsum) {
+    PredicateCounters::decide(PredicateMethod::adaptive, kind, PredicateStage::expansion_b);
+    return sign_of(det);
+  }
   // Exact differences (reached here only after scaling): B is D itself.
-  if (t1 == 0.0 && t2 == 0.0 && t3 == 0.0 && t4 == 0.0) return sign(b);
+  if (t1 == 0.0 && t2 == 0.0 && t3 == 0.0 && t4 == 0.0) {
+    PredicateCounters::decide(PredicateMethod::adaptive, kind, PredicateStage::expansion_b);
+    return sign(b);
+  }
 
   // Stage C: add the first-order tail terms in floating point.
-  PredicateCounters::count(PredicateMethod::adaptive, kind, PredicateStage::expansion_c);
   det += (x1 * t2 + t1 * x2) - (x3 * t4 + t3 * x4);
   const double bound = bound_c * detsum + bound_c_result * std::fabs(det);
-  if (std::fabs(det) > bound) return sign_of(det);
+  if (std::fabs(det) > bound) {
+    PredicateCounters::decide(PredicateMethod::adaptive, kind, PredicateStage::expansion_c);
+    return sign_of(det);
+  }
 
   // Exact stage: D = B + (t1 x2 - t3 x4) + (x1 t2 - x3 t4) + (t1 t2 - t3 t4), each bracket
   // an exact four-component expansion; brackets whose tails are zero are skipped.
-  PredicateCounters::count(PredicateMethod::adaptive, kind, PredicateStage::expansion_exact);
+  PredicateCounters::decide(PredicateMethod::adaptive, kind, PredicateStage::expansion_exact);
   std::array<double, 16> buffer_a;
   std::array<double, 16> buffer_b;
   double* sum = buffer_a.data();
@@ -237,7 +245,7 @@ template <bool SharedOrigin>
                                       double q2x, double q2y, PredicateKind kind) {
   CrossInput in{p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y};
   if (!fit_into_safe_range(in)) {
-    PredicateCounters::count(PredicateMethod::adaptive, kind, PredicateStage::gmp);
+    PredicateCounters::decide(PredicateMethod::adaptive, kind, PredicateStage::gmp);
     return gmp::cross_sign(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y);
   }
   return cross_sign_expansion<SharedOrigin>(in, kind);
@@ -249,8 +257,6 @@ template <bool SharedOrigin>
 template <bool SharedOrigin>
 [[gnu::noinline]] int cross_sign_slow(double p1x, double p1y, double q1x, double q1y, double p2x, double p2y,
                                       double q2x, double q2y, PredicateKind kind) {
-  // Counted as reaching stage B: everything past the filter.
-  PredicateCounters::count(PredicateMethod::adaptive, kind, PredicateStage::expansion_b);
   const double x1 = q1x - p1x;
   const double x2 = q2y - p2y;
   const double x3 = q1y - p1y;
@@ -264,15 +270,17 @@ template <bool SharedOrigin>
                     static_cast<int>(expansion::two_diff_tail(q2x, p2x, x4) == 0.0);
   if (exact != 0) {
     const int s = exact_differences_sign(x1, x2, x3, x4);
-    if (s != 2) return s;
+    if (s != 2) {
+      PredicateCounters::decide(PredicateMethod::adaptive, kind, PredicateStage::expansion_b);
+      return s;
+    }
   }
   // Rounded differences: D is almost always exactly zero here (collinear points), which no
   // floating-point stage can prove; go straight to the exact stage, in integers if it fits.
   // Stages B and C would decide only the rare D within a few u S of zero but not at it.
-  // Counted as the exact stage when it decides; the expansion stages count their own.
   const int s = fixed_point::cross_sign<SharedOrigin>(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y);
   if (s != 2) {
-    PredicateCounters::count(PredicateMethod::adaptive, kind, PredicateStage::expansion_exact);
+    PredicateCounters::decide(PredicateMethod::adaptive, kind, PredicateStage::fixed_point);
     return s;
   }
   return cross_sign_wide<SharedOrigin>(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y, kind);
@@ -284,7 +292,7 @@ template <bool SharedOrigin>
 template <bool SharedOrigin>
 inline int cross_sign(double p1x, double p1y, double q1x, double q1y, double p2x, double p2y, double q2x,
                       double q2y, PredicateKind kind) {
-  PredicateCounters::count(PredicateMethod::adaptive, kind, PredicateStage::filter);
+  PredicateCounters::call(PredicateMethod::adaptive, kind);
   const double x1 = q1x - p1x;
   const double x2 = q2y - p2y;
   const double x3 = q1y - p1y;

@@ -1,6 +1,9 @@
-// Exact orientation predicates on doubles the way the paper proposes: a semi-static
-// floating-point filter, then Boost.Interval arithmetic under directed rounding, then exact
-// GMP arithmetic when the interval contains zero. [MK89 §3.3] [BMP06] [Sh97 §4.2]
+// Exact orientation predicates on doubles the way the paper proposes, interval arithmetic
+// with a multiprecision fallback, in stages of escalating precision: a semi-static
+// floating-point filter, Boost.Interval arithmetic on doubles under directed rounding,
+// interval arithmetic over 128-bit and then 256-bit MPFR numbers (mpfr_interval.hpp, which
+// says which inputs each precision decides), and exact GMP integers when every interval
+// contains zero. [MK89 §3.3] [BMP06] [MPFR] [Sh97 §4.2]
 // Preconditions: finite inputs; IEEE 754 binary64 with gradual underflow (no FTZ/DAZ);
 // the caller's rounding mode is round-to-nearest (the filter's bound assumes it; the
 // interval stage sets its own mode through RoundingGuard and restores the caller's);
@@ -13,6 +16,7 @@
 
 #include <boost/numeric/interval.hpp>
 
+#include "arithmetic/mpfr_interval.hpp"
 #include "arithmetic/predicates_counters.hpp"
 #include "arithmetic/predicates_gmp.hpp"
 #include "arithmetic/rounding_guard.hpp"
@@ -91,12 +95,22 @@ inline int interval_sign(double p1x, double p1y, double q1x, double q1y, double 
                                              double p2x, double p2y, double q2x, double q2y,
                                              PredicateKind kind) {
   // A zero difference vector (its rounded coordinates are zero only when exact) makes D zero.
+  // Counted as the filter's decision.
   if ((q1x == p1x && q1y == p1y) || (q2x == p2x && q2y == p2y)) return 0;
-  PredicateCounters::count(PredicateMethod::interval, kind, PredicateStage::interval);
-  const int s = interval_sign(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y);
-  if (s != 2) return s;
-  PredicateCounters::count(PredicateMethod::interval, kind, PredicateStage::gmp);
-  return gmp::cross_sign(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y);
+  const auto decided = [kind](PredicateStage stage, int sign) {
+    PredicateCounters::decide(PredicateMethod::interval, kind, stage);
+    return sign;
+  };
+  if (const int s = interval_sign(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y); s != 2) {
+    return decided(PredicateStage::interval, s);
+  }
+  if (const int s = mpfr_interval::cross_sign<128>(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y); s != 2) {
+    return decided(PredicateStage::mpfr_128, s);
+  }
+  if (const int s = mpfr_interval::cross_sign<256>(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y); s != 2) {
+    return decided(PredicateStage::mpfr_256, s);
+  }
+  return decided(PredicateStage::gmp, gmp::cross_sign(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y));
 }
 
 // Two doubles in one register (SSE2 on x86-64, NEON on AArch64), through the GCC/Clang
@@ -116,7 +130,7 @@ inline Pair abs_lanes(Pair v) {
 // lane computes exactly the scalar value the derivation above names (x_k, l, r, det, m, e).
 inline int cross_sign(double p1x, double p1y, double q1x, double q1y, double p2x, double p2y,
                       double q2x, double q2y, PredicateKind kind) {
-  PredicateCounters::count(PredicateMethod::interval, kind, PredicateStage::filter);
+  PredicateCounters::call(PredicateMethod::interval, kind);
   const Pair x1_x3 = Pair{q1x, q1y} - Pair{p1x, p1y};
   const Pair x4_x2 = Pair{q2x, q2y} - Pair{p2x, p2y};
   const Pair l_r = x1_x3 * Pair{x4_x2[1], x4_x2[0]};

@@ -8,6 +8,8 @@
 #include <gmpxx.h>
 #include <mpfr.h>
 
+#include <type_traits>
+
 namespace mk {
 
 // Sets MPFR's exponent range to binary64's for the guard's lifetime: with a 53-bit value,
@@ -31,17 +33,23 @@ class DoubleExponentRange {
   mpfr_exp_t emax_;
 };
 
+// GMP's rational as an object (mpq_t is an array of one): taken by reference, so that no
+// integer literal converts to it, as 0 would to a pointer.
+using MpqValue = std::remove_extent_t<mpq_t>;
+
 // The double nearest to q, ties to even; +-infinity when |q| rounds beyond the largest
 // double (|q| >= DBL_MAX + ulp/2), as IEEE 754 rounds.
-inline double nearest_double(const mpq_class& q) {
+inline double nearest_double(const MpqValue& q) {
   const DoubleExponentRange range;
   mpfr_t x;
   mpfr_init2(x, 53);
-  const int inexact = mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
+  const int inexact = mpfr_set_q(x, &q, MPFR_RNDN);
   mpfr_subnormalize(x, inexact, MPFR_RNDN);
   const double d = mpfr_get_d(x, MPFR_RNDN);  // exact: x is a double now
   mpfr_clear(x);
   return d;
 }
+
+inline double nearest_double(const mpq_class& q) { return nearest_double(*q.get_mpq_t()); }
 
 }  // namespace mk

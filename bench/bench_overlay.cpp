@@ -76,6 +76,16 @@ constexpr SizeLimit kSizeLimits[] = {
     {"mkbool:rational", WorkloadKind::star, 1'000},
     {"mkbool:rational", WorkloadKind::checkerboard, 1'000},
     {"mkbool:rational", WorkloadKind::nested_squares, 100},
+    // The rational kernel over Boost's number types: rational's limits (cpp_rational costs
+    // about four times mpq_class, so these rows stay within seconds).
+    {"mkbool:rational-mp", WorkloadKind::blob, 10'000},
+    {"mkbool:rational-mp", WorkloadKind::star, 1'000},
+    {"mkbool:rational-mp", WorkloadKind::checkerboard, 1'000},
+    {"mkbool:rational-mp", WorkloadKind::nested_squares, 100},
+    {"mkbool:rational-cpp", WorkloadKind::blob, 10'000},
+    {"mkbool:rational-cpp", WorkloadKind::star, 1'000},
+    {"mkbool:rational-cpp", WorkloadKind::checkerboard, 1'000},
+    {"mkbool:rational-cpp", WorkloadKind::nested_squares, 100},
     {"mkbool:adaptive", WorkloadKind::checkerboard, 10'000},
     {"mkbool:interval", WorkloadKind::checkerboard, 10'000},
     {"mkbool:cgal", WorkloadKind::checkerboard, 10'000},
@@ -393,7 +403,7 @@ int main(int argc, char** argv) {
   }
   benchmark::Initialize(&argc, argv);
   benchmark::AddCustomContext("malloc", mk::bench::default_malloc ? "glibc default" : "no mmap, no trim");
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;  // a usage error, as everywhere
   mk::bench::register_benchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

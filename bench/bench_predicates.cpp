@@ -1,10 +1,11 @@
 // Speed of the orientation predicates per call: naive double, adaptive (expansions),
-// interval filter, and the GMP evaluations, on random and on exactly degenerate input.
-// [Sh97 §5] (timings of adaptive predicates) [MK89 §3.3]
+// interval filter with its escalating stages, each of those stages alone, the GMP
+// evaluations and the rational kernels over three number types, on random, near-degenerate
+// and exactly degenerate input. [Sh97 §5] (timings of adaptive predicates) [MK89 §3.3]
 // Preconditions: a Release build. Each benchmark iteration is one predicate call, cycling
 // through 4096 precomputed inputs, so the Time column reads as ns per call. Built with
-// MK_COUNTERS=ON, the adaptive and interval rows also report the fraction of calls that
-// got past the first filter (timings then include the counting).
+// MK_COUNTERS=ON, the adaptive and interval rows also report the share of calls each stage
+// decided (timings then include the counting).
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -17,6 +18,9 @@
 #include "arithmetic/adaptive.hpp"
 #include "arithmetic/exact_reference.hpp"
 #include "arithmetic/interval_filter.hpp"
+#include "arithmetic/kernels/rational_kernel.hpp"
+#include "arithmetic/kernels/rational_mp_kernels.hpp"
+#include "arithmetic/mpfr_interval.hpp"
 #include "arithmetic/predicates_counters.hpp"
 #include "arithmetic/predicates_gmp.hpp"
 #include "arithmetic/predicates_naive.hpp"
@@ -65,6 +69,28 @@ struct Cgal {
   }
 };
 #endif
+
+// The interval predicate's stages alone, each on every input (an undecided call, 2, costs
+// what it costs): Boost.Interval on doubles, then MPFR intervals at 128 and 256 bits.
+struct IntervalStage {
+  static constexpr const char* name = "IntervalStage";
+  static int orient2d(const double* v) {
+    return mk::interval_filter::detail::interval_sign(v[0], v[1], v[2], v[3], v[0], v[1], v[4], v[5]);
+  }
+  static int orient_vectors(const double* v) {
+    return mk::interval_filter::detail::interval_sign(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+  }
+};
+template <mpfr_prec_t Bits>
+struct MpfrStage {
+  static constexpr const char* name = Bits == 128 ? "Mpfr128Stage" : "Mpfr256Stage";
+  static int orient2d(const double* v) {
+    return mk::mpfr_interval::cross_sign<Bits>(v[0], v[1], v[2], v[3], v[0], v[1], v[4], v[5]);
+  }
+  static int orient_vectors(const double* v) {
+    return mk::mpfr_interval::cross_sign<Bits>(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]);
+  }
+};
 
 // The ground truth of the tests: mpq rationals.
 struct Rational {
@@ -131,22 +157,54 @@ Inputs collinear_inexact_inputs() {
   return in;
 }
 
+// near_collinear: the last point (orient2d) or the second segment (orient_vectors) on the
+// line through two random points of [-1, 1]^2, computed in double and moved 1 or 2 ulps:
+// D is tiny and rarely zero, beyond the semi-static filter; the interval stages decide it.
+Inputs near_collinear_inputs() {
+  std::mt19937_64 rng(5004);
+  std::uniform_real_distribution<double> d(-1.0, 1.0), t(-2.0, 2.0);
+  std::uniform_int_distribution<int> ulps(-2, 2);
+  Inputs in(input_count);
+  for (auto& v : in) {
+    const double ax = d(rng), ay = d(rng), bx = d(rng), by = d(rng);
+    v[0] = ax, v[1] = ay, v[2] = bx, v[3] = by;
+    for (std::size_t i = 4; i < 8; i += 2) {
+      const double s = t(rng);
+      v[i] = ax + s * (bx - ax);
+      double y = ay + s * (by - ay);
+      for (int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) y = std::nextafter(y, k > 0 ? HUGE_VAL : -HUGE_VAL);
+      v[i + 1] = y;
+    }
+  }
+  return in;
+}
+
 const Inputs& inputs(int which) {
-  static const std::array<Inputs, 3> all{random_inputs(), collinear_inputs(), collinear_inexact_inputs()};
+  static const std::array<Inputs, 4> all{random_inputs(), near_collinear_inputs(), collinear_inputs(),
+                                         collinear_inexact_inputs()};
   return all[static_cast<std::size_t>(which)];
 }
-constexpr std::array<const char*, 3> input_names{"random", "collinear", "collinear_inexact"};
+constexpr std::array<const char*, 4> input_names{"random", "near_collinear", "collinear", "collinear_inexact"};
 
+// Built with MK_COUNTERS=ON: the share of calls each stage of the kind's method decided,
+// one counter per stage that decided any (timings then include the counting).
 template <class Kind>
-void report_filter_failures([[maybe_unused]] benchmark::State& state, [[maybe_unused]] mk::PredicateKind k) {
+void report_stages([[maybe_unused]] benchmark::State& state, [[maybe_unused]] mk::PredicateKind k) {
   if constexpr (mk::PredicateCounters::enabled && requires { Kind::method; }) {
     const auto c = mk::PredicateCounters::read();
     const auto calls = static_cast<double>(c.calls(Kind::method, k));
-    const auto second = Kind::method == mk::PredicateMethod::adaptive ? mk::PredicateStage::expansion_b
-                                                                     : mk::PredicateStage::interval;
-    if (calls > 0) {
-      state.counters["past_filter"] = static_cast<double>(c.reached_stage(Kind::method, k, second)) / calls;
-      state.counters["gmp"] = static_cast<double>(c.reached_stage(Kind::method, k, mk::PredicateStage::gmp)) / calls;
+    if (calls == 0) return;
+    const auto share = [&](const auto& stages) {
+      for (const auto s : stages) {
+        if (const auto n = c.decided(Kind::method, k, s); n > 0) {
+          state.counters[std::string(mk::stage_name(s))] = static_cast<double>(n) / calls;
+        }
+      }
+    };
+    if (Kind::method == mk::PredicateMethod::adaptive) {
+      share(mk::adaptive_stages);
+    } else {
+      share(mk::interval_stages);
     }
   }
 }
@@ -160,7 +218,7 @@ void BM_Orient2d(benchmark::State& state, int which) {
     benchmark::DoNotOptimize(Kind::orient2d(in[i].data()));
     i = (i + 1) % input_count;
   }
-  report_filter_failures<Kind>(state, mk::PredicateKind::orient2d);
+  report_stages<Kind>(state, mk::PredicateKind::orient2d);
 }
 
 template <class Kind>
@@ -172,7 +230,53 @@ void BM_OrientVectors(benchmark::State& state, int which) {
     benchmark::DoNotOptimize(Kind::orient_vectors(in[i].data()));
     i = (i + 1) % input_count;
   }
-  report_filter_failures<Kind>(state, mk::PredicateKind::orient_vectors);
+  report_stages<Kind>(state, mk::PredicateKind::orient_vectors);
+}
+
+// The rational kernel's predicates over each number type, on points converted once (as the
+// kernel holds them): the cost of exact evaluation by number type alone.
+template <class K>
+struct RationalKernelKind {
+  using Points = std::vector<std::array<typename K::Point, 4>>;
+  static const Points& points(int which) {
+    static std::array<Points, input_names.size()> cache;
+    Points& p = cache[static_cast<std::size_t>(which)];
+    if (p.empty()) {
+      for (const auto& v : inputs(which)) {
+        p.push_back({K::point({v[0], v[1]}), K::point({v[2], v[3]}), K::point({v[4], v[5]}), K::point({v[6], v[7]})});
+      }
+    }
+    return p;
+  }
+};
+
+template <class K>
+void BM_Orient2dRational(benchmark::State& state, int which) {
+  const auto& p = RationalKernelKind<K>::points(which);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(K::orient2d(p[i][0], p[i][1], p[i][2]));
+    i = (i + 1) % input_count;
+  }
+}
+
+template <class K>
+void BM_OrientVectorsRational(benchmark::State& state, int which) {
+  const auto& p = RationalKernelKind<K>::points(which);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(K::orient_vectors(p[i][0], p[i][1], p[i][2], p[i][3]));
+    i = (i + 1) % input_count;
+  }
+}
+
+template <class K>
+void register_rational_kernel(const char* name) {
+  for (int which = 0; which < static_cast<int>(input_names.size()); ++which) {
+    const std::string suffix = std::string("<") + name + ">/" + input_names[static_cast<std::size_t>(which)];
+    benchmark::RegisterBenchmark(("BM_Orient2d" + suffix).c_str(), BM_Orient2dRational<K>, which);
+    benchmark::RegisterBenchmark(("BM_OrientVectors" + suffix).c_str(), BM_OrientVectorsRational<K>, which);
+  }
 }
 
 template <class Kind>
@@ -193,10 +297,16 @@ int main(int argc, char** argv) {
 #ifdef MK_WITH_CGAL
   register_kind<Cgal>();
 #endif
+  register_kind<IntervalStage>();
+  register_kind<MpfrStage<128>>();
+  register_kind<MpfrStage<256>>();
   register_kind<GmpFallback>();
   register_kind<Rational>();
+  register_rational_kernel<mk::RationalKernel>("RationalMpq");
+  register_rational_kernel<mk::RationalMpKernel>("RationalMp");
+  register_rational_kernel<mk::RationalCppKernel>("RationalCpp");
   benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;  // a usage error, as everywhere
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

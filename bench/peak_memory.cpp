@@ -40,7 +40,7 @@ long peak_kib() {
 }
 
 [[noreturn]] void usage_error(const std::string& message) {
-  std::cerr << "peak_memory: " << message << "\nusage: peak_memory [WORKLOAD] [N] [KERNEL]\n";
+  std::cerr << "peak_memory: error: " << message << " (usage: peak_memory [WORKLOAD] [N] [KERNEL])\n";
   std::exit(2);
 }
 
@@ -60,6 +60,16 @@ int main(int argc, char** argv) {
   }
   mk::BooleanOptions options;
   options.kernel = argc > 3 ? argv[3] : std::string(mk::default_kernel());
+  {
+    std::string known;
+    bool built = false;
+    for (const auto k : mk::kernel_names()) {
+      built = built || k == options.kernel;
+      known += (known.empty() ? "" : ", ") + std::string(k);
+    }
+    if (!built) usage_error("unknown kernel '" + options.kernel + "' (built: " + known + ")");
+  }
+  if (argc > 4) usage_error("unexpected argument '" + std::string(argv[4]) + "'");
   options.area = false;
   mk::Polygon a;
   mk::Polygon b;

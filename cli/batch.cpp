@@ -4,9 +4,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <new>
 #include <optional>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "api/mkbool.hpp"
 #include "cli/exit_codes.hpp"
@@ -14,13 +17,19 @@
 #include "cli/output_file.hpp"
 #include "cli/stats.hpp"
 #include "io/file.hpp"
+#include "io/parts.hpp"
 #include "io/wkt.hpp"
 
 namespace mk::cli {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using Json = nlohmann::ordered_json;  // output lines: keys in their documented order
+// Input lines are parsed into nlohmann::json, whose objects are std::maps: inserting a key
+// never moves the values already there. ordered_json's objects are vectors of pairs, which
+// copy every value (recursively) when they grow: a deep "id" followed by one more key
+// overflowed the stack while the line was being parsed.
+using InputJson = nlohmann::json;
 
 // A case that cannot be run; its message goes into the output line's "error".
 struct CaseError {
@@ -35,16 +44,20 @@ std::optional<Operation> parse_operation(std::string_view name) {
   return std::nullopt;
 }
 
-std::string member_string(const Json& line, const char* key) {
+std::string member_string(const InputJson& line, const char* key) {
   const auto it = line.find(key);
   if (it == line.end()) throw CaseError{std::string("missing \"") + key + "\""};
   if (!it->is_string()) throw CaseError{std::string("\"") + key + "\" is not a string"};
   return it->get<std::string>();
 }
 
+// Read and checked as the command reads WKT (io/parts.hpp): multi-part input is never
+// reinterpreted.
 Polygon read_case_polygon(const std::string& wkt, const char* key) {
   try {
-    return to_polygon(read_wkt(wkt));
+    PartNames names;
+    const MultiPolygon mp = read_wkt(wkt, &names.parts);
+    return to_checked_polygon(mp, names);
   } catch (const InvalidInput& e) {
     throw CaseError{std::string(key) + ": " + e.what()};
   }
@@ -63,16 +76,41 @@ std::string without_exception_id(const char* what) {
   return message;
 }
 
+// How deep an echoed id may nest. nlohmann's parser and destructor are iterative, so a
+// line of any depth is read and dropped safely, but copying and writing a value recurse once
+// per level: a million nested arrays overflow the stack. The id is therefore checked before
+// it is copied into the output line, and refused beyond this depth; members the batch
+// ignores are never copied.
+constexpr std::size_t max_id_depth = 1000;
+
+// Whether j nests more than `limit` arrays or objects deep; iterative.
+bool nests_deeper_than(const InputJson& j, std::size_t limit) {
+  std::vector<std::pair<const InputJson*, std::size_t>> stack{{&j, 0}};
+  while (!stack.empty()) {
+    const auto [value, depth] = stack.back();
+    stack.pop_back();
+    if (!value->is_structured()) continue;
+    if (depth + 1 > limit) return true;
+    for (const InputJson& child : *value) stack.emplace_back(&child, depth + 1);
+  }
+  return false;
+}
+
 // Fills `out` for one case; throws CaseError when the case fails.
 void run_case(std::string_view text, const BatchOptions& options, Json& out) {
-  Json line;
+  InputJson line;
   try {
-    line = Json::parse(text);
-  } catch (const Json::parse_error& e) {
+    line = InputJson::parse(text);
+  } catch (const InputJson::parse_error& e) {
     throw CaseError{"malformed JSON: " + without_exception_id(e.what())};
   }
   if (!line.is_object()) throw CaseError{"a line must be a JSON object"};
-  if (const auto id = line.find("id"); id != line.end()) out["id"] = *id;
+  if (const auto id = line.find("id"); id != line.end()) {
+    if (nests_deeper_than(*id, max_id_depth)) {
+      throw CaseError{"\"id\" nests deeper than " + std::to_string(max_id_depth) + " levels"};
+    }
+    out["id"] = Json(*id);
+  }
   const std::string op_name = member_string(line, "op");
   out["op"] = op_name;
   const auto op = parse_operation(op_name);
@@ -102,7 +140,9 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
   out["kernel"] = r.stats.kernel;
   out["valid"] = is_output_valid(r.output);
   out["op_ns"] = r.stats.op_ns;
-  out["area"] = r.stats.area ? Json(*r.stats.area) : Json(nullptr);
+  // JSON has no infinity: an area beyond the largest double is null and flagged.
+  out["area"] = r.stats.area && std::isfinite(*r.stats.area) ? Json(*r.stats.area) : Json(nullptr);
+  out["area_beyond_double"] = r.stats.area_beyond_double;
   out["area_exact"] = r.stats.area_exact ? Json(*r.stats.area_exact) : Json(nullptr);
   // Inputs of WKT are islands, so the result is bounded; the check keeps that an invariant.
   if (r.output.unbounded) throw CaseError{"the result is unbounded and has no WKT form"};
@@ -139,9 +179,11 @@ std::size_t run_batch(const BatchOptions& options) {
     if (is_blank(raw)) continue;
 
     // Every key in its place from the start, so that the lines have one shape.
-    Json result = {{"id", nullptr},     {"op", nullptr},         {"kernel", kernel}, {"result_wkt", nullptr},
-                   {"area", nullptr},   {"area_exact", nullptr}, {"valid", nullptr}, {"op_ns", nullptr},
-                   {"line", line_number}};
+    Json result = {{"id", nullptr},         {"op", nullptr},
+                   {"kernel", kernel},       {"result_wkt", nullptr},
+                   {"area", nullptr},        {"area_beyond_double", nullptr},
+                   {"area_exact", nullptr},  {"valid", nullptr},
+                   {"op_ns", nullptr},       {"line", line_number}};
     try {
       run_case(raw, options, result);
     } catch (const CaseError& e) {
@@ -156,7 +198,7 @@ std::size_t run_batch(const BatchOptions& options) {
     }
     if (result.contains("error")) {
       // A failed case reports no partial result.
-      for (const char* key : {"result_wkt", "area", "area_exact", "valid", "op_ns"}) result[key] = nullptr;
+      for (const char* key : {"result_wkt", "area", "area_beyond_double", "area_exact", "valid", "op_ns"}) result[key] = nullptr;
     }
     out.write(result.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n");
   }

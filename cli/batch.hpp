@@ -19,8 +19,10 @@ struct BatchOptions {
 
 // Each non-blank input line is an object with "id" (any JSON value, echoed), "op"
 // (intersection, union, difference, symdifference or xor), "a_wkt" and "b_wkt"; other
-// members are ignored, except "area_exact": false, which leaves that line's exact area out. Each gives one output line, in input order: id, op, kernel,
-// result_wkt, area, area_exact, valid, op_ns, line (1-based input line), and error when the
+// members are ignored, except "area_exact": false, which leaves that line's exact area out.
+// Each gives one output line, in input order: id, op, kernel, result_wkt, area (null beyond
+// the largest double), area_beyond_double, area_exact, valid, op_ns, line (1-based input
+// line), and error when the
 // case failed; a failed case never stops the batch. Returns the number of failed cases.
 // Throws mk::InvalidInput when the batch file cannot be read, mk::cli::OutputError when the
 // output cannot be written (the output file is then left untouched).

@@ -11,6 +11,7 @@
 #include "cli/stats.hpp"
 #include "io/geojson.hpp"
 #include "io/native_json.hpp"
+#include "io/parts.hpp"
 #include "io/svg.hpp"
 #include "io/wkt.hpp"
 
@@ -53,8 +54,10 @@ std::string format_output(const CommandOptions& o, const Polygon& a, const Polyg
 
 void run_command(const CommandOptions& o) {
   if (o.a == "-" && o.b == "-") throw UsageError("A and B cannot both be standard input ('-')");
-  Polygon a = read_input(o.a, "A");
-  Polygon b = read_input(o.b, "B");
+  Input in_a = read_input(o.a, "A");
+  Input in_b = read_input(o.b, "B");
+  Polygon& a = in_a.polygon;
+  Polygon& b = in_b.polygon;
   if (o.a_type) a.type = *o.a_type;
   if (o.b_type) b.type = *o.b_type;
 
@@ -66,7 +69,15 @@ void run_command(const CommandOptions& o) {
   options.area_exact = o.stats;
   options.exact_coordinates = o.format == OutputFormat::native_json;  // only the native format writes them
   PredicateCounters::reset();
-  const BooleanOutput result = compute(a, b, options);
+  BooleanOutput result;
+  try {
+    result = compute(a, b, options);
+  } catch (const CrossingEdges& e) {
+    // Native JSON input is not checked while read (it means what the paper says), so its
+    // crossing edges are found here; named as the reader names them.
+    const Input& in = e.polygon() == 0 ? in_a : in_b;
+    throw InvalidInput(in.name + ": " + describe_crossing(e, in.polygon, in.ring_names));
+  }
   const PredicateCounters counters = PredicateCounters::read();
 
   // Statistics first: they describe the operation, which succeeded even when its result

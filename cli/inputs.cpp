@@ -80,7 +80,7 @@ std::string read_standard_input() {
   return text;
 }
 
-Polygon read_input(const std::string& argument, std::string_view role) {
+Input read_input(const std::string& argument, std::string_view role) {
   const std::string who(role);
   std::string text;
   std::string where;      // the source, as messages name it
@@ -114,11 +114,16 @@ Polygon read_input(const std::string& argument, std::string_view role) {
     throw InvalidInput(who + ": " + (argument == "-" ? "standard input" + message.substr(message.find(" is empty"))
                                                        : message));
   }
+  Input in;
+  in.name = who + " (" + where + ")";
   try {
-    return read_polygon(text, hint);
+    PolygonInput read = read_polygon_input(text, hint);
+    in.polygon = std::move(read.polygon);
+    in.ring_names = std::move(read.ring_names);
   } catch (const InvalidInput& e) {
-    throw InvalidInput(who + " (" + where + "): " + e.what());
+    throw InvalidInput(in.name + ": " + e.what());
   }
+  return in;
 }
 
 }  // namespace mk::cli

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/polygon.hpp"
 
@@ -17,11 +18,18 @@ enum class InputSource { standard_input, file, inline_text };
 // inline text; anything else is taken as a file name so that the error names it.
 InputSource classify_input(const std::string& argument);
 
+// One polygon argument, read.
+struct Input {
+  Polygon polygon;
+  std::string name;                     // for messages: "A (file 'x.wkt')", "B (inline WKT)"
+  std::vector<std::string> ring_names;  // per ring of `polygon`, as the reader names them
+};
+
 // Reads and parses one argument; `role` ("A" or "B") starts every error message, which
 // then names the source ("file 'x.wkt'", "standard input", "inline WKT") and the reader's
 // own position (line, column, polygon, ring, vertex). An empty input is an error (an empty
 // polygon is written POLYGON EMPTY). Throws mk::InvalidInput.
-Polygon read_input(const std::string& argument, std::string_view role);
+Input read_input(const std::string& argument, std::string_view role);
 
 // The whole of standard input, in binary.
 std::string read_standard_input();

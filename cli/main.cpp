@@ -63,15 +63,16 @@ std::string kernel_help() {
 // its own codes; the command's contract is 2 for every usage error.
 int parse_error(const CLI::App& app, const CLI::ParseError& e) {
   if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
-  std::fprintf(stderr, "mkbool: error: %s\nRun 'mkbool --help' for usage.\n", e.what());
+  std::fprintf(stderr, "mkbool: error: %s (see mkbool --help)\n", e.what());
   return static_cast<int>(ExitCode::usage);
 }
 
 int run_batch_form(int argc, char** argv) {
   CLI::App app("Runs one Boolean operation per JSON line. Each input line is an object with \"id\",\n"
                "\"op\" (intersection, union, difference, symdifference or xor), \"a_wkt\" and \"b_wkt\";\n"
-               "each output line has id, op, kernel, result_wkt, area, area_exact, valid, op_ns,\n"
-               "line, and error when that case failed. A failed case never stops the batch.\n",
+               "each output line has id, op, kernel, result_wkt, area, area_beyond_double,\n"
+               "area_exact, valid, op_ns, line, and error when that case failed. A failed case\n"
+               "never stops the batch.\n",
                "mkbool batch");
   BatchOptions o;
   bool non_regular = false;
@@ -109,14 +110,15 @@ int run_command_form(int argc, char** argv) {
   const std::map<std::string, Operation> ops{{"intersection", Operation::intersection},
                                              {"union", Operation::union_},
                                              {"difference", Operation::difference},
-                                             {"xor", Operation::symmetric_difference}};
+                                             {"xor", Operation::symmetric_difference},
+                                             {"symdifference", Operation::symmetric_difference}};
   const std::map<std::string, OutputFormat> formats{{"wkt", OutputFormat::wkt},
                                                     {"geojson", OutputFormat::geojson},
                                                     {"json", OutputFormat::native_json},
                                                     {"svg", OutputFormat::svg}};
   const std::map<std::string, PolygonType> types{{"island", PolygonType::island}, {"hole", PolygonType::hole}};
 
-  app.add_option("OP", op, "intersection, union, difference (A minus B) or xor")
+  app.add_option("OP", op, "intersection, union, difference (A minus B) or xor (also: symdifference)")
       ->required()
       ->check(CLI::IsMember(ops));
   app.add_option("A", o.a, "first polygon: file, '-' or inline WKT")->required();

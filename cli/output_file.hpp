@@ -11,9 +11,14 @@ namespace mk::cli {
 // With a path, the bytes go to a temporary file in the target's directory, which commit()
 // renames over the target: rename within one file system is atomic, so a reader (or a
 // failed run) never sees a partial file and an older file stays intact until the end.
-// Without commit() the destructor removes the temporary file. An empty path or `-` means
-// standard output, written as it comes; so is a target that is not a regular file (a
-// device such as /dev/null, or a pipe). Failures throw mk::cli::OutputError.
+// Without commit() the destructor removes the temporary file. A symbolic link is written
+// through: the target is the link chain's final file (created if the link dangles), so the
+// link stays a link. A replaced file keeps its permission bits (and, run as root, its
+// owner); a read-only file is refused. An empty path or `-` means standard output, written
+// as it comes; a target that is not a regular file (a device such as /dev/null, a FIFO, a
+// terminal, /dev/stdout on a pipe) is written in place, never replaced. Hard links to a
+// replaced file keep the old contents, as with any rename-based writer.
+// Failures throw mk::cli::OutputError.
 class OutputFile {
  public:
   explicit OutputFile(std::string path);
@@ -29,6 +34,7 @@ class OutputFile {
   void open_temporary();
 
   std::string path_;       // empty: standard output
+  std::string target_;     // the file renamed over: path_ with its symbolic links resolved
   std::string temporary_;  // created on the first write
   int fd_ = -1;
   bool in_place_ = false;  // the target is a device or pipe, written directly

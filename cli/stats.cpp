@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <vector>
 
 #include "arithmetic/kernels/exact_kernel.hpp"
@@ -14,24 +15,25 @@ namespace mk::cli {
 
 namespace {
 
+// Per method and predicate: the calls, and how many of them each stage decided (the
+// method's stages in order, stages that decided nothing left out).
 nlohmann::ordered_json counters_json(const PredicateCounters& c) {
-  constexpr std::pair<PredicateMethod, const char*> methods[] = {{PredicateMethod::adaptive, "adaptive"},
-                                                                {PredicateMethod::interval, "interval"}};
-  constexpr std::pair<PredicateKind, const char*> kinds[] = {{PredicateKind::orient2d, "orient2d"},
-                                                            {PredicateKind::orient_vectors, "orient_vectors"}};
-  constexpr std::pair<PredicateStage, const char*> stages[] = {
-      {PredicateStage::filter, "filter"},           {PredicateStage::interval, "interval"},
-      {PredicateStage::expansion_b, "expansion_b"}, {PredicateStage::expansion_c, "expansion_c"},
-      {PredicateStage::expansion_exact, "expansion_exact"}, {PredicateStage::gmp, "gmp"}};
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  for (const auto& [m, m_name] : methods) {
-    for (const auto& [k, k_name] : kinds) {
+  for (const PredicateMethod m : {PredicateMethod::adaptive, PredicateMethod::interval}) {
+    for (const PredicateKind k : {PredicateKind::orient2d, PredicateKind::orient_vectors}) {
       if (c.calls(m, k) == 0) continue;
-      nlohmann::ordered_json per_stage = nlohmann::ordered_json::object();
-      for (const auto& [s, s_name] : stages) {
-        if (const auto n = c.reached_stage(m, k, s); n > 0) per_stage[s_name] = n;
+      nlohmann::ordered_json decided = nlohmann::ordered_json::object();
+      const auto add = [&](const auto& stages) {
+        for (const PredicateStage s : stages) {
+          if (const auto n = c.decided(m, k, s); n > 0) decided[std::string(stage_name(s))] = n;
+        }
+      };
+      if (m == PredicateMethod::adaptive) {
+        add(adaptive_stages);
+      } else {
+        add(interval_stages);
       }
-      out[m_name][k_name] = per_stage;
+      out[std::string(method_name(m))][std::string(kind_name(k))] = {{"calls", c.calls(m, k)}, {"decided", decided}};
     }
   }
   return out;
@@ -56,7 +58,10 @@ std::string stats_json(const BooleanOutput& result, const PredicateCounters& cou
   j["crossings"] = s.crossings;
   j["vertices_out"] = s.vertices_out;
   j["rounded_valid"] = result.output.rounded_valid ? nlohmann::ordered_json(*result.output.rounded_valid) : nullptr;
-  j["area"] = s.area ? nlohmann::ordered_json(*s.area) : nullptr;
+  // JSON has no infinity: an area beyond the largest double is null, with the flag saying
+  // why (null alone means unbounded or not computed).
+  j["area"] = s.area && std::isfinite(*s.area) ? nlohmann::ordered_json(*s.area) : nullptr;
+  j["area_beyond_double"] = s.area_beyond_double;
   j["area_exact"] = s.area_exact ? nlohmann::ordered_json(*s.area_exact) : nullptr;
   if constexpr (PredicateCounters::enabled) j["predicates"] = counters_json(counters);
   return j.dump();

@@ -16,9 +16,10 @@ namespace mk::cli {
 bool is_output_valid(const Output& output);
 
 // One JSON object, no newline: kernel, op_ns, vertices_in, crossings, vertices_out,
-// rounded_valid (null for inexact kernels), area (null when unbounded), area_exact (null
-// for inexact kernels or when unbounded), and, in builds with MK_COUNTERS, "predicates":
-// per method and predicate, how many calls reached each stage. `counters` are those of the
+// rounded_valid (null for inexact kernels), area (null when unbounded or beyond the
+// largest double), area_beyond_double (true for the latter), area_exact (null for inexact
+// kernels or when unbounded), and, in builds with MK_COUNTERS, "predicates": per method and
+// predicate, the calls and how many of them each stage decided. `counters` are those of the
 // whole mk::compute call, so they include the exact check of the rounded output.
 std::string stats_json(const BooleanOutput& result, const PredicateCounters& counters);
 

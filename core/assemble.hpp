@@ -10,24 +10,28 @@
 
 #include "core/arrangement.hpp"
 #include "core/step6_construct.hpp"
+#include "predicates/directions.hpp"
 
 namespace mk {
 
 namespace detail {
 
 // Whether direction c -> d lies strictly inside the counterclockwise sector from c -> a to
-// c -> b (a and b not in the same direction; d in neither's direction).
+// c -> b (a and b not in the same direction; d in neither's direction): the sector test of
+// predicates/directions.hpp over directions from c, ordered by angle from south: first
+// those leading lexicographically after c (angles in (-pi/2, pi/2]), then the others, and
+// within each half (less than half a turn wide) by orientation.
 template <Kernel K>
 bool is_in_sector(const typename K::Vertex& c, const typename K::Vertex& a, const typename K::Vertex& b,
                   const typename K::Vertex& d) {
-  const Sign ab = K::orient_vertices(c, a, b);
-  if (ab == Sign::positive) {
-    return K::orient_vertices(c, a, d) == Sign::positive && K::orient_vertices(c, d, b) == Sign::positive;
-  }
-  if (ab == Sign::negative) {
-    return !(K::orient_vertices(c, b, d) != Sign::negative && K::orient_vertices(c, d, a) != Sign::negative);
-  }
-  return K::orient_vertices(c, a, d) == Sign::positive;
+  using V = const typename K::Vertex*;
+  const auto compare = [&](V u, V w) {
+    const bool u_first_half = K::compare_vertices(*u, c) == Sign::positive;
+    const bool w_first_half = K::compare_vertices(*w, c) == Sign::positive;
+    if (u_first_half != w_first_half) return u_first_half ? Sign::negative : Sign::positive;
+    return -K::orient_vertices(c, *u, *w);
+  };
+  return is_in_ccw_sweep<V>(&a, &b, &d, compare);
 }
 
 }  // namespace detail

@@ -56,7 +56,20 @@ using TraceHook = std::function<void(Step, const Arrangement<K>&)>;
 
 namespace detail {
 
-template <Kernel K>
+// An empty EF table of organisation Table, sized for the fragments of step 4.
+template <class Table, Kernel K>
+Table make_ef_table(const Arrangement<K>& arr) {
+  if constexpr (std::is_same_v<Table, HashEdgeTable>) {
+    // Each fragment makes at most one entry in regular output, and rarely two otherwise.
+    return HashEdgeTable(arr.polygon[0].fragments.size() + arr.polygon[1].fragments.size(), arr.num_vertices());
+  } else {
+    return Table();
+  }
+}
+
+// The procedure polygonoperation [MK89 §3.2] with EF organised as Table: the six steps of
+// [MK89 §3.1], one call each.
+template <Kernel K, class Table>
 BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const BasicPolygon<typename K::Point>& b,
                                 const Options& opt, const TraceHook<K>& trace) {
   const auto hook = [&](Step s, const Arrangement<K>& arr) {
@@ -64,7 +77,7 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   };
   BooleanResult<K> res;
   Arrangement<K>& arr = res.arrangement;
-  arr = prepare<K>(a, b, opt.pair_search);
+  arr = prepare<K>(a, b, opt.pair_search);  // input: point identities, vertex-complete rings
   hook(Step::prepared, arr);
   normalize_orientations(arr, opt.op);  // step 1
   hook(Step::oriented, arr);
@@ -72,41 +85,18 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   hook(Step::vertex_rings, arr);
   insert_intersections(arr, opt.pair_search);  // step 3
   hook(Step::intersections, arr);
-  Classification cls = classify_fragments(arr);  // step 4
+  Incidence inc = classify_fragments(arr);  // step 4
   hook(Step::classified, arr);
-  // Step 5 streams the selected fragments into EF: A's, then B's.
-  const auto build = [&](auto& ef) {
-    using Table = std::decay_t<decltype(ef)>;
-    if constexpr (std::is_same_v<Table, SortedEdgeTable>) {
-      std::array<std::vector<EfEntry>, 2> batch;  // the sorted organisation takes A's, then B's batch
-      select_fragments(arr, cls, opt.op, opt.regular, [&](int p, const EfEntry& e) { batch[p].push_back(e); });
-      for (auto& b : batch) ef.insert_batch(std::move(b), opt.regular);
-    } else {
-      select_fragments(arr, cls, opt.op, opt.regular, [&](int, const EfEntry& e) { ef.insert(e, opt.regular); });
-    }
-    std::vector<int> isolated;
-    if (!opt.regular) {
-      std::vector<bool> touched(static_cast<std::size_t>(arr.num_vertices()), false);
-      ef.for_each([&](const EfEntry& e) { touched[e.from] = touched[e.to] = true; });
-      isolated = select_isolated_points(arr, cls, opt.op, touched);
-    }
-    hook(Step::selected, arr);
-    // Step 6 needs EF and the vertices only: the per-edge data of steps 2-5 is released
-    // first, so that step 6's arrays reuse its memory instead of growing the heap.
-    for (RayTable& rays : cls.rays) rays = RayTable();
-    release_fragments(arr);
-    res.cycles = construct_result_cycles(arr, ef, opt.op);  // step 6
-    for (const int v : isolated) res.cycles.push_back({{v}, {}, PolygonType::island, true});
-  };
-  if (opt.ef == EfOrganisation::sorted) {
-    SortedEdgeTable ef;
-    build(ef);
-  } else {
-    // Each fragment makes at most one entry in regular output, and rarely two otherwise.
-    HashEdgeTable ef(arr.polygon[0].fragments.size() + arr.polygon[1].fragments.size(), arr.num_vertices());
-    build(ef);
-  }
+  Table ef = make_ef_table<Table>(arr);
+  const std::vector<int> isolated_points = select_into_ef(arr, inc, opt.op, opt.regular, ef);  // step 5
+  hook(Step::selected, arr);
+  // Step 6 needs EF and the vertices only: the per-edge data of steps 2-5 is released
+  // first, so that step 6's arrays reuse its memory instead of growing the heap.
+  inc = Incidence();
+  release_fragments(arr);
+  res.cycles = construct_result_polygons(arr, ef, opt.op, isolated_points);  // step 6
   hook(Step::constructed, arr);
+  // The unbounded face lies outside both polygons' FAR: in A's region when A is a hole.
   const PolygonType ta = arr.polygon[0].type;
   const PolygonType tb = arr.polygon[1].type;
   res.unbounded = is_face_in_result(opt.op, ta == PolygonType::hole, tb == PolygonType::hole);
@@ -114,6 +104,13 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   res.stats.crossings = static_cast<std::size_t>(arr.num_crossings());
   for (const auto& c : res.cycles) res.stats.vertices_out += c.vertices.size();
   return res;
+}
+
+template <Kernel K>
+BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const BasicPolygon<typename K::Point>& b,
+                                const Options& opt, const TraceHook<K>& trace) {
+  if (opt.ef == EfOrganisation::sorted) return run_boolean_op<K, SortedEdgeTable>(a, b, opt, trace);
+  return run_boolean_op<K, HashEdgeTable>(a, b, opt, trace);
 }
 
 }  // namespace detail

@@ -18,6 +18,31 @@ class InvalidInput : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// One edge of an input ring, by the ring's index and the indices of its end vertices in the
+// ring as given to the library.
+struct RingEdge {
+  int ring = -1;
+  int from = -1;
+  int to = -1;
+};
+
+// Two edges of one input polygon cross at a point inside both [MK89 §3.3: touching edges
+// are repaired, crossing ones cannot be]. Carries the edges so that callers which know more
+// (coordinates, how the user named the rings) can say it in their words.
+class CrossingEdges : public InvalidInput {
+ public:
+  CrossingEdges(int polygon, RingEdge first, RingEdge second, const std::string& message)
+      : InvalidInput(message), polygon_(polygon), first_(first), second_(second) {}
+  int polygon() const { return polygon_; }  // 0 for A, 1 for B
+  const RingEdge& first() const { return first_; }
+  const RingEdge& second() const { return second_; }
+
+ private:
+  int polygon_;
+  RingEdge first_;
+  RingEdge second_;
+};
+
 // A kernel whose predicates are not exact produced an inconsistent arrangement (for
 // example a vertex ring that does not close). Never raised by exact kernels on valid input.
 class KernelFailure : public std::runtime_error {

@@ -1,9 +1,11 @@
-// Incidence of edge fragments at vertices (the rays leaving a vertex along fragments) and
-// counts of fragments that coincide as sets; used by steps 4 and 5.
+// Incidence of edge fragments at vertices (each fragment seen from its two ends, grouped by
+// vertex) and counts of fragments that coincide as sets; used by steps 4 and 5. Not to be
+// confused with the locating ray of predicates/ray.hpp.
 // [MK89 §4.3] (classification at boundary points) [MK89 §3.3] (EF: matching fragments)
 // Preconditions: step 3 done.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -16,9 +18,9 @@ namespace mk {
 // vertex and -1 when it arrives, and the direction away from the vertex (given by the
 // original edge's input points). Stored as one int, 2 fragment + 1 when it arrives; the
 // direction is looked up only when asked for.
-class Ray {
+class FragmentEnd {
  public:
-  Ray(const PreparedPolygon& poly, int code) : poly_(&poly), code_(code) {}
+  FragmentEnd(const PreparedPolygon& poly, int code) : poly_(&poly), code_(code) {}
   int fragment() const { return code_ >> 1; }
   int sign() const { return (code_ & 1) != 0 ? -1 : 1; }
   Direction dir() const {
@@ -31,18 +33,18 @@ class Ray {
   int code_;
 };
 
-// The rays of one polygon's fragments, grouped by vertex, each stored as its code: the
+// The ends of one polygon's fragments, grouped by vertex, each stored as its code: the
 // table costs 4 bytes per vertex and 8 per fragment, and is built without a second
 // per-vertex array.
 // A bit per vertex says whether the polygon reaches it at all: most queries are about the
 // other polygon's vertices, which it does not reach, and the bits (1/32 of the groups'
 // size) answer them from cache.
 // The polygon must outlive the table and keep its fragments and edges in place.
-class RayTable {
+class FragmentEndTable {
  public:
-  RayTable() = default;
-  RayTable(const PreparedPolygon& poly, int num_vertices) : poly_(&poly) {
-    // begin_[v] first counts v's rays, then holds the end of v's group, and is moved down
+  FragmentEndTable() = default;
+  FragmentEndTable(const PreparedPolygon& poly, int num_vertices) : poly_(&poly) {
+    // begin_[v] first counts v's fragment ends, then holds the end of v's group, and is moved down
     // to its start as the group is filled from the back.
     begin_.assign(static_cast<std::size_t>(num_vertices) + 1, 0);
     for (const auto& f : poly.fragments) {
@@ -67,7 +69,7 @@ class RayTable {
   class Iterator {
    public:
     Iterator(const PreparedPolygon* poly, const int* code) : poly_(poly), code_(code) {}
-    Ray operator*() const { return {*poly_, *code_}; }
+    FragmentEnd operator*() const { return {*poly_, *code_}; }
     Iterator& operator++() {
       ++code_;
       return *this;
@@ -95,21 +97,27 @@ class RayTable {
   const PreparedPolygon* poly_ = nullptr;
   std::vector<int> begin_;
   std::vector<int> codes_;
-  std::vector<std::uint64_t> reached_;  // bit v: v has rays
+  std::vector<std::uint64_t> reached_;  // bit v: v has fragment ends
 };
 
 // Fragments of polygon x lying on u -> w: (same direction, opposite direction), found among
-// x's rays at u, which are few.
-inline std::pair<int, int> fragments_along(const PreparedPolygon& x, const RayTable& x_rays, int u, int w) {
+// x's fragment ends at u, which are few.
+inline std::pair<int, int> fragments_along(const PreparedPolygon& x, const FragmentEndTable& x_ends, int u, int w) {
   int same = 0;
   int opposite = 0;
-  if (!x_rays.reaches(u)) return {0, 0};
-  for (const Ray& r : x_rays.at(u)) {
-    const Fragment& f = x.fragments[r.fragment()];
-    if (r.sign() > 0 && f.to == w) ++same;
-    if (r.sign() < 0 && f.from == w) ++opposite;
+  if (!x_ends.reaches(u)) return {0, 0};
+  for (const FragmentEnd& end : x_ends.at(u)) {
+    const Fragment& f = x.fragments[end.fragment()];
+    if (end.sign() > 0 && f.to == w) ++same;
+    if (end.sign() < 0 && f.from == w) ++opposite;
   }
   return {same, opposite};
 }
+
+// Both polygons' fragment ends by vertex: what steps 4 and 5 read about the arrangement
+// besides the fragments themselves (index 0 for A, 1 for B).
+struct Incidence {
+  std::array<FragmentEndTable, 2> ends;
+};
 
 }  // namespace mk

@@ -69,10 +69,13 @@ inline void split_into_cycles(IdRing&& ring, int ring_index, std::vector<int>& w
   for (const int id : stack) where[id] = -1;
 }
 
-inline std::string edge_name(const char* poly, const IdRing& ring, int ring_index, std::size_t k) {
-  return std::string("polygon ") + poly + " ring " + std::to_string(ring_index) + " edge from vertex " +
-         std::to_string(ring.input_index[k]) + " to vertex " +
-         std::to_string(ring.input_index[(k + 1) % ring.ids.size()]);
+inline RingEdge ring_edge(const IdRing& ring, int ring_index, std::size_t k) {
+  return {ring_index, ring.input_index[k], ring.input_index[(k + 1) % ring.ids.size()]};
+}
+
+inline std::string edge_name(const RingEdge& e) {
+  return "ring " + std::to_string(e.ring) + "'s edge from vertex " + std::to_string(e.from) + " to vertex " +
+         std::to_string(e.to);
 }
 
 // Inserts the points of one polygon that touch its own edges (orientable -> vertex-complete)
@@ -109,9 +112,11 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
     if (rel.proper_crossing) {
       const EdgeRef ea = refs[i];
       const EdgeRef eb = refs[j];
-      throw InvalidInput(edge_name(poly_name, rings[ea.ring], ea.ring, ea.k) + " crosses " +
-                         edge_name(poly_name, rings[eb.ring], eb.ring, eb.k) +
-                         ": the polygon is not orientable and cannot be made vertex-complete");
+      const RingEdge first = ring_edge(rings[ea.ring], ea.ring, ea.k);
+      const RingEdge second = ring_edge(rings[eb.ring], eb.ring, eb.k);
+      throw CrossingEdges(poly_name[0] == 'A' ? 0 : 1, first, second,
+                          std::string("polygon ") + poly_name + ": " + edge_name(first) + " crosses " +
+                              edge_name(second) + "; edges of a polygon may touch but must not cross");
     }
     if (rel.c_inside_ab) inserted.add(i, b.lo);
     if (rel.d_inside_ab) inserted.add(i, b.hi);

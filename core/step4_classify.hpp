@@ -19,11 +19,6 @@
 
 namespace mk {
 
-// Everything step 5 needs about the arrangement besides the fragments themselves.
-struct Classification {
-  std::array<RayTable, 2> rays;
-};
-
 template <Kernel K>
 WindingLocator<K> make_locator(const Arrangement<K>& arr, const PreparedPolygon& x, std::size_t queries) {
   return WindingLocator<K>(arr, x.edges, queries);
@@ -32,13 +27,14 @@ WindingLocator<K> make_locator(const Arrangement<K>& arr, const PreparedPolygon&
 namespace detail {
 
 // Walks one cycle of polygon p and records the winding depth of polygon x on both sides of
-// each fragment. Crossing a ray of x counterclockwise raises the depth when the fragment
-// leaves the vertex (x's region is on its left) and lowers it when it arrives.
+// each fragment. Sweeping counterclockwise over a fragment end of x at a vertex raises the
+// depth when the fragment leaves the vertex (x's region is on its left) and lowers it when
+// it arrives.
 template <Kernel K>
-void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, const Classification& cls,
+void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, const Incidence& inc,
                 const WindingLocator<K>& x_locator) {
   const PreparedPolygon& x = arr.polygon[xi];
-  const RayTable& x_rays = cls.rays[xi];
+  const FragmentEndTable& x_ends = inc.ends[xi];
   const DirectionOrder<K> order(arr.points);
   const int first = p.cycle_first_fragment[c];
   const int last = p.cycle_first_fragment[c + 1];
@@ -46,23 +42,23 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
   // [MK89 §4.3 step 1] One located point per ring: just left of its first fragment.
   const int anchor = x_locator.winding(e0.src, e0.dst, Side::left);
   int left = anchor;
-  // At a vertex where only the ring's own two fragments meet (count 2 in its own ray table),
-  // those two rays are known without reading them: the fragment arriving and the one leaving.
+  // At a vertex where only the ring's own two fragments meet (count 2 in its own table),
+  // those two fragment ends are known without reading them: the fragment arriving and the one leaving.
   const bool own = &x == &p;
   for (int i = first; i < last; ++i) {
     Fragment& f = p.fragments[i];
     const Fragment& next = p.fragments[i + 1 < last ? i + 1 : first];
     int same = 0;
     int opposite = 0;
-    if (own && x_rays.count(f.from) == 2) {
-      same = 1;  // f itself; the other ray is the previous fragment arriving
+    if (own && x_ends.count(f.from) == 2) {
+      same = 1;  // f itself; the other end is the previous fragment arriving
       opposite = p.fragments[i > first ? i - 1 : last - 1].from == f.to ? 1 : 0;
     } else {
-      std::tie(same, opposite) = fragments_along(x, x_rays, f.from, f.to);
+      std::tie(same, opposite) = fragments_along(x, x_ends, f.from, f.to);
     }
     f.far_left[xi] = x.far_sign * left;
     f.far_right[xi] = x.far_sign * (left - (same - opposite));
-    if (own ? x_rays.count(f.to) == 2 : !x_rays.reaches(f.to)) continue;  // no ray between f and next
+    if (own ? x_ends.count(f.to) == 2 : !x_ends.reaches(f.to)) continue;  // no fragment end between f and next
     const Edge& ein = p.edges[f.edge];
     const Edge& eout = p.edges[next.edge];
     const Direction back{ein.dst, ein.src};
@@ -70,12 +66,12 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
     // The left side of `next` is reached from the left side of f by sweeping clockwise
     // from `back` to `ahead`, i.e. through the counterclockwise sector ahead -> back.
     int delta = 0;
-    for (const Ray& r : x_rays.at(f.to)) {
-      // A ray along `back` or `ahead` themselves lies on the sector's boundary, never
+    for (const FragmentEnd& end : x_ends.at(f.to)) {
+      // A fragment along `back` or `ahead` themselves lies on the sector's boundary, never
       // strictly inside: at the vertices of p's own ring no predicate is evaluated.
-      const Direction dir = r.dir();
+      const Direction dir = end.dir();
       if (dir == back || dir == ahead) continue;
-      if (order.is_in_ccw_sector(ahead, back, dir)) delta += r.sign();
+      if (order.is_in_ccw_sector(ahead, back, dir)) delta += end.sign();
     }
     left -= delta;
   }
@@ -88,20 +84,20 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
 }  // namespace detail
 
 template <Kernel K>
-Classification classify_fragments(Arrangement<K>& arr) {
+Incidence classify_fragments(Arrangement<K>& arr) {
   const int nv = arr.num_vertices();
-  Classification cls{{RayTable(arr.polygon[0], nv), RayTable(arr.polygon[1], nv)}};
+  Incidence inc{{FragmentEndTable(arr.polygon[0], nv), FragmentEndTable(arr.polygon[1], nv)}};
   // Each locator answers one query per cycle of A and of B.
   const std::size_t queries = arr.polygon[0].cycles.size() + arr.polygon[1].cycles.size();
   const std::array<WindingLocator<K>, 2> locators{make_locator(arr, arr.polygon[0], queries),
                                                   make_locator(arr, arr.polygon[1], queries)};
   for (auto& p : arr.polygon) {
     for (int c = 0; c + 1 < static_cast<int>(p.cycle_first_fragment.size()); ++c) {
-      detail::walk_cycle(arr, p, c, 0, cls, locators[0]);
-      detail::walk_cycle(arr, p, c, 1, cls, locators[1]);
+      detail::walk_cycle(arr, p, c, 0, inc, locators[0]);
+      detail::walk_cycle(arr, p, c, 1, inc, locators[1]);
     }
   }
-  return cls;
+  return inc;
 }
 
 // FAR depth of polygon x at input point v, which lies on none of x's edges.

@@ -7,6 +7,9 @@
 // the tables are a special case of (paper-notes.md, deviations).
 #pragma once
 
+#include <array>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/arrangement.hpp"
@@ -106,7 +109,7 @@ void for_each_entry_of(const PreparedPolygon& poly, const Fragment& f, Selection
 // insert(p, EfEntry) (p = 0 for A's fragments, 1 for B's) for the entries that makes,
 // fragment by fragment [MK89 §3.1 step 5].
 template <Kernel K, class F>
-void select_fragments(const Arrangement<K>& arr, const Classification& cls, Operation op, bool regular, F&& insert) {
+void select_fragments(const Arrangement<K>& arr, const Incidence& inc, Operation op, bool regular, F&& insert) {
   const PolygonType ta = arr.polygon[0].type;
   const PolygonType tb = arr.polygon[1].type;
   for (int p = 0; p < 2; ++p) {
@@ -117,7 +120,7 @@ void select_fragments(const Arrangement<K>& arr, const Classification& cls, Oper
       const bool own_right = f.far_right[p] > 0;
       const bool other_left = f.far_left[q] > 0;
       const bool other_right = f.far_right[q] > 0;
-      const auto [same, opposite] = fragments_along(arr.polygon[q], cls.rays[q], f.from, f.to);
+      const auto [same, opposite] = fragments_along(arr.polygon[q], inc.ends[q], f.from, f.to);
       // A regular part of its own polygon: its FAR on the side Table 1 put it.
       const bool proper_own = poly.far_sign > 0 ? (own_left && !own_right) : (!own_left && own_right);
       const bool proper_other = other_left != other_right ? same + opposite == 1 : same + opposite == 0;
@@ -145,13 +148,13 @@ void select_fragments(const Arrangement<K>& arr, const Classification& cls, Oper
 // are selected only without regularity and only where no other fragment is adjacent]: points
 // of the closed-set result with no result face or selected fragment around them.
 template <Kernel K>
-std::vector<int> select_isolated_points(const Arrangement<K>& arr, const Classification& cls, Operation op,
+std::vector<int> select_isolated_points(const Arrangement<K>& arr, const Incidence& inc, Operation op,
                                         const std::vector<bool>& touched) {
   const PolygonType ta = arr.polygon[0].type;
   const PolygonType tb = arr.polygon[1].type;
   std::vector<int> candidates;
   for (int v = 0; v < arr.num_points(); ++v) {
-    if (!cls.rays[0].at(v).empty() && !cls.rays[1].at(v).empty()) candidates.push_back(v);
+    if (!inc.ends[0].at(v).empty() && !inc.ends[1].at(v).empty()) candidates.push_back(v);
   }
   for (const auto& poly : arr.polygon) {
     for (const int v : poly.point_cycles) candidates.push_back(v);
@@ -170,8 +173,8 @@ std::vector<int> select_isolated_points(const Arrangement<K>& arr, const Classif
     bool any_a = false, all_a = true, any_b = false, all_b = true, any_result = false;
     bool has_faces = false;
     for (int p = 0; p < 2; ++p) {
-      for (const Ray& r : cls.rays[p].at(v)) {
-        const Fragment& f = arr.polygon[p].fragments[r.fragment()];
+      for (const FragmentEnd& end : inc.ends[p].at(v)) {
+        const Fragment& f = arr.polygon[p].fragments[end.fragment()];
         for (int side = 0; side < 2; ++side) {
           const bool in_a = is_in_region(ta, side == 0 ? f.far_left[0] : f.far_right[0]);
           const bool in_b = is_in_region(tb, side == 0 ? f.far_left[1] : f.far_right[1]);
@@ -192,11 +195,30 @@ std::vector<int> select_isolated_points(const Arrangement<K>& arr, const Classif
       any_result = is_face_in_result(op, in_a, in_b);
     }
     if (any_result) continue;
-    const bool on_a = !cls.rays[0].at(v).empty() || is_point_cycle[0][v];
-    const bool on_b = !cls.rays[1].at(v).empty() || is_point_cycle[1][v];
+    const bool on_a = !inc.ends[0].at(v).empty() || is_point_cycle[0][v];
+    const bool on_b = !inc.ends[1].at(v).empty() || is_point_cycle[1][v];
     if (is_in_closed_result(op, on_a || any_a, all_a, on_b || any_b, all_b)) out.push_back(v);
   }
   return out;
+}
+
+// Step 5 as the driver calls it: the selected fragments into EF, A's then B's (the sorted
+// organisation takes each polygon's entries as one batch, the hash table one entry at a
+// time), then, in non-regular output, the isolated points, which are returned.
+template <Kernel K, class Table>
+std::vector<int> select_into_ef(const Arrangement<K>& arr, const Incidence& inc, Operation op, bool regular,
+                                Table& ef) {
+  if constexpr (std::is_same_v<Table, SortedEdgeTable>) {
+    std::array<std::vector<EfEntry>, 2> batch;
+    select_fragments(arr, inc, op, regular, [&](int p, const EfEntry& e) { batch[p].push_back(e); });
+    for (auto& b : batch) ef.insert_batch(std::move(b), regular);
+  } else {
+    select_fragments(arr, inc, op, regular, [&](int, const EfEntry& e) { ef.insert(e, regular); });
+  }
+  if (regular) return {};
+  std::vector<bool> touched(static_cast<std::size_t>(arr.num_vertices()), false);
+  ef.for_each([&](const EfEntry& e) { touched[e.from] = touched[e.to] = true; });
+  return select_isolated_points(arr, inc, op, touched);
 }
 
 }  // namespace mk

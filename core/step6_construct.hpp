@@ -123,4 +123,14 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
   return out;
 }
 
+// Step 6 as the driver calls it: the cycles traced through EF, then the isolated points of
+// step 5 as one-sided result polygons.
+template <Kernel K, class Table>
+std::vector<ResultCycle> construct_result_polygons(const Arrangement<K>& arr, Table& ef, Operation op,
+                                                   const std::vector<int>& isolated_points) {
+  std::vector<ResultCycle> out = construct_result_cycles(arr, ef, op);
+  for (const int v : isolated_points) out.push_back({{v}, {}, PolygonType::island, true});
+  return out;
+}
+
 }  // namespace mk

@@ -161,6 +161,10 @@ void write_file(const fs::path& path, const std::string& text) {
 
 CaseSpec spec_of(const ResultRow& r) { return {r.generator, r.variant, parse_params(r.params), r.seed}; }
 
+// Every regression case a sweep writes says how it becomes a test.
+const std::string kKeepAsTest =
+    "to keep it as a test: copy this file to tests/regression/cases/ (tests/regression replays every case there)";
+
 std::string run_suffix(const ResultRow& r) { return "_" + r.op + (r.regular ? "" : "_nonregular"); }
 
 // Which failures to picture first: the worst, and among valid outputs those whose area
@@ -274,7 +278,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
                                                     {"generator=" + r->generator + " variant=" + r->variant +
                                                          " params=" + r->params + " seed=" + std::to_string(r->seed),
                                                      "kernel=" + r->kernel + " verdict=" +
-                                                         std::string(verdict_name(r->verdict)) + " " + r->message}));
+                                                         std::string(verdict_name(r->verdict)) + " " + r->message,
+                                                     kKeepAsTest}));
             return;
           }
           const ExactResult ref = exact_reference(c.a, c.b, op, r->regular, false);
@@ -326,7 +331,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
                                                       {"RationalKernel violates an exact identity: " + *what,
                                                        "found measuring " + r->kernel + " on generator=" + r->generator +
                                                            " variant=" + r->variant + " params=" + r->params +
-                                                           " seed=" + std::to_string(r->seed) + " op=" + r->op}));
+                                                           " seed=" + std::to_string(r->seed) + " op=" + r->op,
+                                                       kKeepAsTest}));
               return;
             }
           }

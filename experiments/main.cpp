@@ -1,10 +1,14 @@
 // mkbool-experiment: run robustness sweeps (generators x kernels x operations x regular x
 // seeds), merge shards, write the report, and reproduce single cases. [MK89 §3.3]
-// Preconditions: none; bad arguments exit with status 2 and a message.
+// Preconditions: none; every bad argument exits with status 2 and one line naming it.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +19,7 @@
 #include <gmp.h>
 
 #include "api/mkbool.hpp"
+#include "experiments/arguments.hpp"
 #include "experiments/artefacts.hpp"
 #include "experiments/external_cases.hpp"
 #include "experiments/generators.hpp"
@@ -24,6 +29,7 @@
 
 namespace fs = std::filesystem;
 using namespace mk::experiments;
+using namespace mk::experiments::arguments;
 
 namespace {
 
@@ -144,17 +150,16 @@ int run_command(const RunArgs& a, const std::string& command_line) {
 
   RunOptions o;
   if (a.kernels.empty()) {
-    for (const auto k : mk::kernel_names()) o.kernels.emplace_back(k);
+    // The number-type variants of `rational` (same results, several times its cost) only in
+    // the full sweep, so that the default sweep keeps its few minutes.
+    for (const auto k : mk::kernel_names()) {
+      if (a.full || !mk::is_number_type_variant(k)) o.kernels.emplace_back(k);
+    }
     if (!a.no_peers) {
       for (const auto p : peer_names()) o.kernels.emplace_back(p);
     }
   } else {
-    for (const auto& k : a.kernels) {
-      bool known = is_peer(k);
-      for (const auto n : mk::kernel_names()) known = known || n == k;
-      if (!known) throw CLI::ValidationError("--kernels", "back end '" + k + "' is not built into this binary (see `list`)");
-      o.kernels.push_back(k);
-    }
+    o.kernels = a.kernels;  // checked while parsing (kernels and peers)
   }
   // Peers run on every external case; on generated cases the default sweep samples them
   // (every 4th case, inputs up to 2000 vertices), --full runs them all.
@@ -192,10 +197,16 @@ int run_command(const RunArgs& a, const std::string& command_line) {
     if (!suffix.empty()) fs::rename(fs::path(a.out) / "artefacts.csv", fs::path(a.out) / ("artefacts" + suffix + ".csv"));
     std::cerr << "mkbool-experiment: " << n_art << " failure artefacts (pictures, regression cases) in "
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+    bool any_case = false;
     for (const auto& art : arts) {
       if (art.kind != Artefact::Kind::regression_case) continue;
       const bool core = art.path.find("inconsistency_") != std::string::npos;
       std::cerr << (core ? "  reference inconsistency: " : "  exact-kernel failure: ") << art.path << "\n";
+      any_case = true;
+    }
+    if (any_case) {
+      std::cerr << "  to keep them as tests: cp " << (fs::path(a.out) / "regression").string()
+                << "/*.wkt tests/regression/cases/ (tests/regression replays every case there)\n";
     }
   }
   {
@@ -324,17 +335,37 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "run a sweep, write DIR/results*.csv, failure artefacts and DIR/README.md");
   auto* quick = run->add_flag("--quick", ra.quick, "small sweep (under 2 minutes on 2 cores)");
   run->add_flag("--full", ra.full, "long sweep (hours; see experiments/README.md)")->excludes(quick);
-  run->add_option("--kernels,--backends", ra.kernels, "back ends to run: kernels and peers (default: every one built)")->delimiter(',');
+  const auto backend_check = accepted_by(
+      [](const std::string& k) {
+        if (!is_peer(k)) check_kernel(k);
+      },
+      "back end");
+  const auto generator_check = accepted_by([](const std::string& g) { find_generator(g); }, "generator");
+  run->add_option("--kernels,--backends", ra.kernels, "back ends to run: kernels and peers (default: every one built; rational-mp and rational-cpp only with --full)")
+      ->delimiter(',')
+      ->check(backend_check);
   run->add_flag("--no-peers", ra.no_peers, "kernels only (no GEOS, Boost.Geometry, Clipper, CGAL)");
-  run->add_option("--peer-every", ra.peer_every, "run peers on every N-th generated case (default: 4; --full: 1)")->check(CLI::PositiveNumber);
-  run->add_option("--cases", ra.cases, "sweep your own pairs: JSON Lines of the batch format (id, op, a_wkt, b_wkt)")->check(CLI::ExistingFile);
-  run->add_option("--generators", ra.generators, "generators to run (default: all; see `list`)")->delimiter(',');
-  run->add_option("--seeds", ra.seeds, "random instances per configuration (default: by level)")->check(CLI::PositiveNumber);
-  run->add_option("--seed", ra.base_seed, "base seed; every case seed derives from it")->capture_default_str();
-  run->add_option("--shard", ra.shard, "run only shard i of N (i/N, 0-based): every N-th case from i");
-  run->add_option("--jobs,-j", ra.jobs, "worker processes")->capture_default_str()->check(CLI::PositiveNumber);
-  run->add_option("--timeout", ra.timeout, "seconds per run before it counts as a timeout (default: 20 quick, 60, 300 full)");
-  run->add_option("--memory-mb", ra.memory_mb, "address-space limit per worker (default: 80% of RAM / jobs)");
+  run->add_option("--peer-every", ra.peer_every, "run peers on every N-th generated case (default: 4; --full: 1)")
+      ->check(whole_number(1, 1'000'000, "a whole number from 1 to 1000000"));
+  run->add_option("--cases", ra.cases, "sweep your own pairs: JSON Lines of the batch format (id, op, a_wkt, b_wkt)")
+      ->check(CLI::ExistingFile);
+  run->add_option("--generators", ra.generators, "generators to run (default: all; see `list`)")
+      ->delimiter(',')
+      ->check(generator_check);
+  run->add_option("--seeds", ra.seeds, "random instances per configuration (default: by level)")
+      ->check(whole_number(1, 1'000'000, "a whole number of seeds from 1 to 1000000"));
+  run->add_option("--seed", ra.base_seed, "base seed; every case seed derives from it")
+      ->capture_default_str()
+      ->check(whole_number(0, UINT64_MAX, "a whole number from 0 to 2^64-1"));
+  run->add_option("--shard", ra.shard, "run only shard i of N (i/N, 0-based): every N-th case from i")
+      ->check(accepted_by([](const std::string& t) { parse_shard(t); }, "shard"));
+  run->add_option("--jobs,-j", ra.jobs, "worker processes")
+      ->capture_default_str()
+      ->check(whole_number(1, 1024, "a whole number of worker processes from 1 to 1024"));
+  run->add_option("--timeout", ra.timeout, "seconds per run before it counts as a timeout (default: 20 quick, 60, 300 full)")
+      ->check(positive_seconds());
+  run->add_option("--memory-mb", ra.memory_mb, "address-space limit per worker (default: 80% of RAM / jobs)")
+      ->check(whole_number(1, UINT64_MAX >> 20, "a whole number of megabytes, at least 1"));
   run->add_flag("--no-artefacts", ra.no_artefacts, "skip failure pictures and regression cases");
   run->add_flag("--no-report", ra.no_report, "skip the report");
   run->add_flag("--no-plots", ra.no_plots, "report without running the plot script");
@@ -360,17 +391,56 @@ int main(int argc, char** argv) {
   std::string case_params, case_op = "intersection", case_out = ".", case_file;
   bool case_nonregular = false, case_no_pictures = false;
   auto* one = app.add_subcommand("case", "regenerate one case: regression case file and a picture per kernel");
-  one->add_option("--generator", spec.generator, "generator name")->required();
+  one->add_option("--generator", spec.generator, "generator name")->required()->check(generator_check);
   one->add_option("--variant", spec.variant, "variant name (CSV column variant)")->required();
   one->add_option("--params", case_params, "parameters as in the CSV, e.g. k=-3 or i=4;j=8");
-  one->add_option("--seed", spec.seed, "case seed (CSV column seed; any value for reported and cases)");
-  one->add_option("--op", case_op, "intersection, union, difference or xor")->capture_default_str();
+  one->add_option("--seed", spec.seed, "case seed (CSV column seed; any value for reported and cases)")
+      ->check(whole_number(0, UINT64_MAX, "a whole number from 0 to 2^64-1"));
+  one->add_option("--op", case_op, "intersection, union, difference or xor (or symdifference)")
+      ->capture_default_str()
+      ->check(accepted_by([](const std::string& op) { parse_operation(operation_argument(op)); }, "operation"));
   one->add_flag("--nonregular", case_nonregular, "non-regular operation");
   one->add_option("-o,--out", case_out, "output directory")->capture_default_str();
   one->add_option("--cases", case_file, "JSON Lines file of generator `cases` (the case is --variant ID)")->check(CLI::ExistingFile);
   one->add_flag("--no-pictures", case_no_pictures, "write the regression case file only");
 
-  CLI11_PARSE(app, argc, argv);
+  // CLI11's own exit codes (104-106) and multi-line messages become exit 2 and one line.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string first = argv[1];
+    bool known = false;
+    for (const auto* sub : app.get_subcommands({})) known = known || sub->get_name() == first;
+    if (!known) return usage_error("unknown command '" + first + "' (run, merge, report, list or case)");
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    return usage_error(e.what());
+  }
+  // Checks that need more than one argument, or a look at the file system.
+  if (*one) {
+    const auto& variants = find_generator(spec.generator).variants;
+    // External generators' variants are case ids, checked when the case is looked up.
+    if (!is_external_generator(spec.generator) &&
+        std::find(variants.begin(), variants.end(), spec.variant) == variants.end()) {
+      std::string known;
+      for (const auto v : variants) known += (known.empty() ? "" : ", ") + std::string(v);
+      return usage_error("--variant: generator " + spec.generator + " has no variant '" + spec.variant +
+                         "' (it has: " + known + ")");
+    }
+    try {
+      spec.params = parse_params(case_params);
+    } catch (const std::invalid_argument& e) {
+      return usage_error(std::string("--params: ") + e.what());
+    }
+    case_op = operation_argument(case_op);
+  }
+  if (*report && !has_results(report_dir)) {
+    return usage_error(report_dir + " holds no results*.csv; run `mkbool-experiment run -o " + report_dir + "` first");
+  }
+  if (*merge && std::none_of(merge_dirs.begin(), merge_dirs.end(), has_results)) {
+    return usage_error("none of the directories holds results*.csv files to merge");
+  }
   try {
     if (*run) return run_command(ra, command_line);
     if (*merge) return merge_command(merge_dirs, merge_out, !merge_no_plots);
@@ -392,7 +462,6 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*one) {
-      spec.params = parse_params(case_params);
       if (!case_file.empty()) set_user_cases(case_file);
       return case_command(spec, case_op, !case_nonregular, case_out, !case_no_pictures);
     }

@@ -13,6 +13,7 @@
 #include <map>
 #include <string>
 
+#include "arithmetic/nearest_double.hpp"
 #include "io/svg.hpp"
 
 namespace mk::experiments {
@@ -75,12 +76,13 @@ bool clip(double& px, double& py, double& qx, double& qy) {
   return true;
 }
 
-// The window's coordinates of a point, computed exactly before rounding.
+// The window's coordinates of a point, computed exactly, then rounded to the nearest
+// double (the one rounding of rationals, arithmetic/nearest_double.hpp).
 std::pair<double, double> local(const Window& w, const Point& p) {
   const mpq_class hw(w.half_width);
   const mpq_class x = (mpq_class(p.x) - mpq_class(w.centre.x)) / hw;
   const mpq_class y = (mpq_class(p.y) - mpq_class(w.centre.y)) / hw;
-  return {x.get_d(), y.get_d()};
+  return {nearest_double(x), nearest_double(y)};
 }
 
 std::string pixel(double v, bool flip) { return number((flip ? 1 - v : 1 + v) * zoom_size / 2); }

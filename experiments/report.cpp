@@ -277,6 +277,8 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
     md << "\n";
   }
 
+  fallback_section(md, rows);
+
   md << "## Area error of `valid_different` results\n\n"
         "Area of the symmetric difference between the kernel's output and the exact result, relative to the "
         "exact area (absolute when that is 0), computed exactly.\n\n";

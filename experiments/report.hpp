@@ -5,6 +5,7 @@
 // artefacts.csv).
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ std::string write_report(const std::string& dir, const ReportOptions& options);
 // The Markdown text alone, from rows, artefacts and the sweep description lines.
 std::string report_markdown(const std::vector<ResultRow>& rows, const std::vector<Artefact>& artefacts,
                             const std::vector<std::string>& sweep_lines, const std::vector<std::string>& plots);
+
+// The section "Cost of exactness by fallback strategy" (report_fallbacks.cpp).
+void fallback_section(std::ostream& md, const std::vector<ResultRow>& rows);
 
 // Where plots.py is: $MK_EXPERIMENT_PLOTS, next to the executable, or in the source tree.
 std::string plot_script_path();

@@ -17,7 +17,7 @@ const std::vector<std::string_view>& csv_columns() {
       "case",         "generator",       "variant",   "params",          "seed",
       "size",         "op",              "regular",   "kernel",          "verdict",
       "area_error",   "symdiff_area",    "exact_area", "op_ns",          "predicate_calls",
-      "predicate_fallbacks", "vertices_in", "crossings", "vertices_out", "message",
+      "predicate_fallbacks", "predicate_stages", "vertices_in", "crossings", "vertices_out", "message",
       "rounding_bound", "oracle_agrees", "geos_valid", "exact_valid"};
   return cols;
 }
@@ -113,9 +113,9 @@ std::string to_csv(const ResultRow& r) {
          std::to_string(r.seed) + ',' + std::to_string(r.size) + ',' + r.op + ',' + (r.regular ? "true" : "false") +
          ',' + r.kernel + ',' + std::string(verdict_name(r.verdict)) + ',' + opt(r.area_error) + ',' +
          opt(r.symdiff_area) + ',' + opt(r.exact_area) + ',' + opt(r.op_ns) + ',' + opt(r.predicate_calls) + ',' +
-         opt(r.predicate_fallbacks) + ',' + opt(r.vertices_in) + ',' + opt(r.crossings) + ',' + opt(r.vertices_out) +
-         ',' + csv_quoted(r.message) + ',' + opt(r.rounding_bound) + ',' + flag(r.oracle_agrees) + ',' +
-         flag(r.geos_valid) + ',' + flag(r.exact_valid);
+         opt(r.predicate_fallbacks) + ',' + r.predicate_stages + ',' + opt(r.vertices_in) + ',' + opt(r.crossings) +
+         ',' + opt(r.vertices_out) + ',' + csv_quoted(r.message) + ',' + opt(r.rounding_bound) + ',' +
+         flag(r.oracle_agrees) + ',' + flag(r.geos_valid) + ',' + flag(r.exact_valid);
   return out;
 }
 
@@ -144,14 +144,15 @@ ResultRow parse_csv_row(std::string_view line) {
   r.op_ns = parse_opt<std::int64_t>(f[13]);
   r.predicate_calls = parse_opt<std::int64_t>(f[14]);
   r.predicate_fallbacks = parse_opt<std::int64_t>(f[15]);
-  r.vertices_in = parse_opt<std::int64_t>(f[16]);
-  r.crossings = parse_opt<std::int64_t>(f[17]);
-  r.vertices_out = parse_opt<std::int64_t>(f[18]);
-  r.message = f[19];
-  r.rounding_bound = parse_opt<double>(f[20]);
-  r.oracle_agrees = parse_flag(f[21]);
-  r.geos_valid = parse_flag(f[22]);
-  r.exact_valid = parse_flag(f[23]);
+  r.predicate_stages = f[16];
+  r.vertices_in = parse_opt<std::int64_t>(f[17]);
+  r.crossings = parse_opt<std::int64_t>(f[18]);
+  r.vertices_out = parse_opt<std::int64_t>(f[19]);
+  r.message = f[20];
+  r.rounding_bound = parse_opt<double>(f[21]);
+  r.oracle_agrees = parse_flag(f[22]);
+  r.geos_valid = parse_flag(f[23]);
+  r.exact_valid = parse_flag(f[24]);
   return r;
 }
 

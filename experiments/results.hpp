@@ -33,6 +33,9 @@ struct ResultRow {
   std::optional<std::int64_t> op_ns;
   std::optional<std::int64_t> predicate_calls;
   std::optional<std::int64_t> predicate_fallbacks;
+  // The calls each stage decided, "stage=n;stage=n" in stage order (predicates_counters.hpp),
+  // stages that decided none left out; empty without counters.
+  std::string predicate_stages;
   std::optional<std::int64_t> vertices_in;
   std::optional<std::int64_t> crossings;
   std::optional<std::int64_t> vertices_out;

@@ -2,6 +2,7 @@
 // the public API, each assessed against the reference. [MK89 §3.2] [MK89 §3.3]
 // Preconditions: see runner.hpp.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <exception>
 #include <map>
@@ -29,6 +30,7 @@ namespace {
 struct Counts {
   std::optional<std::int64_t> calls;
   std::optional<std::int64_t> fallbacks;
+  std::string stages;
 };
 
 void reset_counters() {
@@ -37,23 +39,32 @@ void reset_counters() {
 #endif
 }
 
-// Predicate calls and how many left the first (filter) stage, where the build counts them
-// (CMake option MK_COUNTERS); empty otherwise.
+// Predicate calls, how many left the first (filter) stage, and how many each stage decided
+// (summed over methods and predicates), where the build counts them (CMake option
+// MK_COUNTERS); empty otherwise.
 Counts read_counters() {
   Counts c;
 #ifdef MK_EXPERIMENTS_HAVE_COUNTERS
   const PredicateCounters p = PredicateCounters::read();
-  std::int64_t calls = 0, filter_failed = 0;
-  for (std::size_t m = 0; m < PredicateCounters::method_count; ++m) {
-    for (std::size_t k = 0; k < PredicateCounters::kind_count; ++k) {
-      const auto base = (m * PredicateCounters::kind_count + k) * PredicateCounters::stage_count;
-      calls += static_cast<std::int64_t>(p.reached[base]);
-      filter_failed += static_cast<std::int64_t>(p.reached[base + 1] + p.reached[base + 2]);
+  std::int64_t calls = 0, past_filter = 0;
+  std::array<std::uint64_t, PredicateCounters::stage_count> by_stage{};
+  for (const PredicateMethod m : {PredicateMethod::adaptive, PredicateMethod::interval}) {
+    for (const PredicateKind k : {PredicateKind::orient2d, PredicateKind::orient_vectors}) {
+      calls += static_cast<std::int64_t>(p.calls(m, k));
+      past_filter += static_cast<std::int64_t>(p.past_filter(m, k));
+      for (std::size_t s = 0; s < by_stage.size(); ++s) by_stage[s] += p.decided(m, k, static_cast<PredicateStage>(s));
     }
   }
   if (calls > 0) {
     c.calls = calls;
-    c.fallbacks = filter_failed;
+    c.fallbacks = past_filter;
+    for (std::size_t s = 0; s < by_stage.size(); ++s) {
+      if (by_stage[s] == 0) continue;
+      if (!c.stages.empty()) c.stages += ';';
+      c.stages += stage_name(static_cast<PredicateStage>(s));
+      c.stages += '=';
+      c.stages += std::to_string(by_stage[s]);
+    }
   }
 #endif
   return c;
@@ -250,6 +261,7 @@ void run_case(const IndexedCase& c, const RunOptions& o, std::size_t first_slot,
         const Counts counts = read_counters();
         r.predicate_calls = counts.calls;
         r.predicate_fallbacks = counts.fallbacks;
+        r.predicate_stages = counts.stages;
         r.op_ns = out.stats.op_ns;
         r.vertices_in = static_cast<std::int64_t>(out.stats.vertices_in);
         r.crossings = static_cast<std::int64_t>(out.stats.crossings);

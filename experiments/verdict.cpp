@@ -9,7 +9,9 @@
 #include <limits>
 #include <map>
 
+#include "arithmetic/shoelace.hpp"
 #include "core/boolean_op.hpp"
+#include "core/canonical.hpp"
 #include "core/to_output.hpp"
 
 namespace mk::experiments {
@@ -44,74 +46,29 @@ std::optional<Verdict> parse_verdict(std::string_view name) {
   return std::nullopt;
 }
 
-mpq_class twice_signed_area(const std::vector<RationalPoint>& r) {
-  mpq_class a = 0;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const auto& p = r[i];
-    const auto& q = r[(i + 1) % r.size()];
-    a += p.x * q.y - q.x * p.y;
-  }
-  return a;
-}
+mpq_class twice_signed_area(const std::vector<RationalPoint>& r) { return mk::twice_signed_area<mpq_class>(r); }
 
 // Islands add, holes subtract: the area of a bounded result from its typed cycles.
 mpq_class typed_area(const std::vector<ExactCycle>& cycles) {
-  mpq_class total = 0;
-  for (const auto& c : cycles) {
-    if (c.vertices.size() < 3) continue;
-    const mpq_class a = abs(twice_signed_area(c.vertices)) / 2;
-    total += c.type == PolygonType::island ? a : mpq_class(-a);
-  }
-  return total;
+  return mk::typed_area<mpq_class>(
+      cycles, [](const ExactCycle& c) -> const std::vector<RationalPoint>& { return c.vertices; },
+      [](const ExactCycle& c) { return c.type == PolygonType::island; });
 }
 
 namespace {
 
-// A cycle as a comparable key: its type and its vertices from the lexicographically least
-// rotation (cycles have no distinguished start; their direction is part of the result).
 template <class V, class Less>
-std::pair<PolygonType, std::vector<V>> canonical(PolygonType type, const std::vector<V>& vs, Less less) {
-  const std::size_t n = vs.size();
-  if (n == 0) return {type, {}};
-  const auto at = [&](std::size_t start, std::size_t i) -> const V& { return vs[(start + i) % n]; };
-  // Only rotations starting at a least vertex compete (usually exactly one: cycles have
-  // distinct vertices, though rounded ones may repeat).
-  std::size_t best = 0;
-  for (std::size_t s = 1; s < n; ++s) {
-    if (less(vs[s], vs[best])) best = s;
-  }
-  for (std::size_t s = best + 1; s < n; ++s) {
-    if (less(vs[best], vs[s]) || less(vs[s], vs[best])) continue;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (less(at(s, i), at(best, i))) {
-        best = s;
-        break;
-      }
-      if (less(at(best, i), at(s, i))) break;
-    }
-  }
-  std::vector<V> out;
-  out.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) out.push_back(at(best, i));
-  return {type, std::move(out)};
-}
-
-template <class V, class Less>
-bool same_cycles(std::vector<std::pair<PolygonType, std::vector<V>>> x, std::vector<std::pair<PolygonType, std::vector<V>>> y,
-                 Less less, std::string& note) {
+bool same_cycles(std::vector<CanonicalCycle<V>> x, std::vector<CanonicalCycle<V>> y, Less less, std::string& note) {
   if (x.size() != y.size()) {
     note = std::to_string(x.size()) + " result polygons instead of " + std::to_string(y.size());
     return false;
   }
-  const auto key_less = [&](const auto& a, const auto& b) {
-    if (a.first != b.first) return a.first < b.first;
-    if (a.second.size() != b.second.size()) return a.second.size() < b.second.size();
-    return std::lexicographical_compare(a.second.begin(), a.second.end(), b.second.begin(), b.second.end(), less);
-  };
-  std::sort(x.begin(), x.end(), key_less);
-  std::sort(y.begin(), y.end(), key_less);
+  x = canonical(std::move(x), less);
+  y = canonical(std::move(y), less);
+  const auto equal = [&](const V& p, const V& q) { return !less(p, q) && !less(q, p); };
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (key_less(x[i], y[i]) || key_less(y[i], x[i])) {
+    if (x[i].first != y[i].first ||
+        !std::equal(x[i].second.begin(), x[i].second.end(), y[i].second.begin(), y[i].second.end(), equal)) {
       note = "result polygon " + std::to_string(i) + " (sorted) differs";
       return false;
     }
@@ -220,7 +177,7 @@ bool is_valid_output(const Output& output, PolygonType ccw_type, std::string* wh
     if (c.vertices.size() < 3) continue;
     std::vector<RationalPoint> r;
     for (const auto& v : c.vertices) r.push_back(RationalKernel::point(v));
-    const int s = sgn(twice_signed_area(r));
+    const int s = sgn(twice_signed_area<mpq_class>(r));
     if (s == 0 || (s > 0) != (c.type == ccw_type)) {
       if (why) *why = "result polygon " + std::to_string(i) + ": orientation contradicts its type";
       return false;
@@ -277,7 +234,7 @@ std::optional<mpq_class> parity_area(const std::vector<std::vector<RationalPoint
       }
       if (!decided) return std::nullopt;
     }
-    const mpq_class a = abs(twice_signed_area(rings[i])) / 2;
+    const mpq_class a = abs(twice_signed_area<mpq_class>(rings[i])) / 2;
     total += depth % 2 == 0 ? a : mpq_class(-a);
   }
   return total;
@@ -369,7 +326,7 @@ std::optional<SymmetricDifference> symmetric_difference_area(const std::vector<E
 PolygonType ccw_type_of(const ExactResult& ref) {
   for (const auto& c : ref.cycles) {
     if (c.vertices.size() < 3) continue;
-    return sgn(twice_signed_area(c.vertices)) > 0 ? c.type : opposite(c.type);
+    return sgn(twice_signed_area<mpq_class>(c.vertices)) > 0 ? c.type : opposite(c.type);
   }
   return PolygonType::island;
 }
@@ -394,15 +351,15 @@ Assessment assess(const Output& output, const ExactResult& ref) {
   if (!match) out.note = output.unbounded ? "unbounded, exact result bounded" : "bounded, exact result unbounded";
   if (match && exact) {
     const auto less = [](const RationalPoint& p, const RationalPoint& q) { return p.x != q.x ? p.x < q.x : p.y < q.y; };
-    std::vector<std::pair<PolygonType, std::vector<RationalPoint>>> x, y;
-    for (const auto& c : exact_cycles(output)) x.push_back(canonical(c.type, c.vertices, less));
-    for (const auto& c : ref.cycles) y.push_back(canonical(c.type, c.vertices, less));
+    std::vector<CanonicalCycle<RationalPoint>> x, y;
+    for (const auto& c : exact_cycles(output)) x.push_back({c.type, c.vertices});
+    for (const auto& c : ref.cycles) y.push_back({c.type, c.vertices});
     match = same_cycles(std::move(x), std::move(y), less, out.note);
   } else if (match) {
     const auto less = [](const Point& p, const Point& q) { return p.x != q.x ? p.x < q.x : p.y < q.y; };
-    std::vector<std::pair<PolygonType, std::vector<Point>>> x, y;
-    for (const auto& c : output.irreducible) x.push_back(canonical(c.type, c.vertices, less));
-    for (const auto& c : ref.output.irreducible) y.push_back(canonical(c.type, c.vertices, less));
+    std::vector<CanonicalCycle<Point>> x, y;
+    for (const auto& c : output.irreducible) x.push_back({c.type, c.vertices});
+    for (const auto& c : ref.output.irreducible) y.push_back({c.type, c.vertices});
     match = same_cycles(std::move(x), std::move(y), less, out.note);
   }
   if (match) {

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "io/format.hpp"
 #include "io/geojson.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -21,6 +22,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   } catch (const mk::InvalidInput&) {
     // Rejected with a message: the expected outcome for malformed input.
+  }
+  try {
+    // As the command reads it: with the multi-part check (io/parts.hpp).
+    (void)mk::read_polygon_input(text, "a.geojson");
+  } catch (const mk::InvalidInput&) {
   }
   return 0;
 }

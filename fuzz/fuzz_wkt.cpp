@@ -1,5 +1,6 @@
 // libFuzzer target for the WKT reader and writer: any input either parses or throws
-// mk::InvalidInput, and whatever parses survives write_wkt / read_wkt unchanged in shape.
+// mk::InvalidInput, and whatever parses survives write_wkt / read_wkt unchanged in shape;
+// the command's reading (with the multi-part check) only ever throws mk::InvalidInput.
 // [OGC06-103 §7]
 // Preconditions: built by fuzz/run.sh (clang, -fsanitize=fuzzer,address,undefined).
 #include <cstddef>
@@ -35,6 +36,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check_round_trip(mk::read_wkt(text));
   } catch (const mk::InvalidInput&) {
     // Rejected with a message: the expected outcome for malformed text.
+  }
+  try {
+    // As the command reads it: with the multi-part check (io/parts.hpp).
+    (void)mk::read_polygon_input(text, "a.wkt");
+  } catch (const mk::InvalidInput&) {
   }
   return 0;
 }

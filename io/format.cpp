@@ -7,6 +7,7 @@
 
 #include "io/geojson.hpp"
 #include "io/native_json.hpp"
+#include "io/parts.hpp"
 #include "io/wkt.hpp"
 
 namespace mk {
@@ -86,13 +87,30 @@ Format sniff_format(std::string_view text, std::string_view filename_hint) {
   return top_object_has_rings(text) ? Format::native_json : Format::geojson;
 }
 
-Polygon read_polygon(std::string_view text, std::string_view filename_hint) {
-  switch (sniff_format(text, filename_hint)) {
-    case Format::wkt: return to_polygon(read_wkt(text));
-    case Format::geojson: return to_polygon(read_geojson(text));
-    case Format::native_json: return read_native_json(text);
+PolygonInput read_polygon_input(std::string_view text, std::string_view filename_hint) {
+  PolygonInput in;
+  in.format = sniff_format(text, filename_hint);
+  PartNames names;
+  switch (in.format) {
+    case Format::native_json:
+      in.polygon = read_native_json(text);
+      for (std::size_t r = 0; r < in.polygon.rings.size(); ++r) in.ring_names.push_back("rings[" + std::to_string(r) + "]");
+      return in;
+    case Format::wkt:
+    case Format::geojson:
+      break;
   }
-  return {};
+  names.json_paths = in.format == Format::geojson;
+  const MultiPolygon mp = in.format == Format::wkt ? read_wkt(text, &names.parts) : read_geojson(text, &names.parts);
+  in.polygon = to_checked_polygon(mp, names);
+  for (std::size_t p = 0; p < mp.size(); ++p) {
+    for (std::size_t k = 0; k <= mp[p].holes.size(); ++k) in.ring_names.push_back(ring_name(names, p, k));
+  }
+  return in;
+}
+
+Polygon read_polygon(std::string_view text, std::string_view filename_hint) {
+  return read_polygon_input(text, filename_hint).polygon;
 }
 
 }  // namespace mk

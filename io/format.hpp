@@ -3,7 +3,9 @@
 // Preconditions: none; unreadable input throws mk::InvalidInput.
 #pragma once
 
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/polygon.hpp"
 
@@ -20,8 +22,21 @@ std::string_view format_name(Format format);
 // above, anything else WKT. The content scan stops early and copies nothing.
 Format sniff_format(std::string_view text, std::string_view filename_hint);
 
+// A polygon read from text, with the names its rings have in messages.
+struct PolygonInput {
+  Polygon polygon;
+  Format format = Format::wkt;
+  // Per ring of `polygon`: "polygon 1, ring 0" (WKT), "coordinates[1][0]" (GeoJSON),
+  // "rings[3]" (native JSON).
+  std::vector<std::string> ring_names;
+};
+
 // Reads a polygon in the sniffed format. WKT and GeoJSON give one island-type polygon whose
-// rings are the shells and holes (their nesting decides their role) [MK89 §2.2].
+// rings are the shells and holes, once checked that reading them by nesting [MK89 §2.2]
+// gives what OGC means (io/parts.hpp: the union of the parts, each its shell less its holes).
+PolygonInput read_polygon_input(std::string_view text, std::string_view filename_hint);
+
+// The polygon alone.
 Polygon read_polygon(std::string_view text, std::string_view filename_hint);
 
 }  // namespace mk

@@ -3,6 +3,7 @@
 // Preconditions: none; malformed input throws mk::InvalidInput naming the element's path.
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/geojson.hpp"
@@ -23,6 +24,8 @@ enum class Place { top, feature_member, feature_geometry, collection_member };
 
 class GeoJsonReader {
  public:
+  explicit GeoJsonReader(std::vector<std::string>* part_names) : part_names_(part_names) {}
+
   MultiPolygon read(const Json& root) {
     read_object(root, "", Place::top);
     return std::move(result_);
@@ -130,6 +133,7 @@ class GeoJsonReader {
       }
     }
     result_.push_back(std::move(polygon));
+    if (part_names_ != nullptr) part_names_->push_back(path);
   }
 
   static Ring read_ring(const Json& positions, const std::string& path) {
@@ -143,21 +147,21 @@ class GeoJsonReader {
       if (!position.is_array()) {
         fail(index_path(path, v), "expected a position [x, y], found " + json_type_name(position));
       }
-      if (position.size() != 2) {
-        fail(index_path(path, v),
-             position.size() > 2
-                 ? "position has " + std::to_string(position.size()) +
-                       " coordinates; altitude (Z) and further coordinates are not supported"
-                 : "position has " + std::to_string(position.size()) +
-                       " coordinates; expected [x, y]");
+      if (position.size() < 2) {
+        fail(index_path(path, v), "position has " + std::to_string(position.size()) +
+                                      " coordinates; expected [x, y] or [x, y, altitude]");
       }
+      // [RFC7946 §3.1.1] An altitude (and any further element) is allowed: it is checked like
+      // x and y, then dropped, since the operation is planar.
       Point p;
       std::string problem;
-      if (!io_detail::json_number_to_double(position[0], p.x, problem)) {
-        fail(index_path(index_path(path, v), 0), problem);
-      }
-      if (!io_detail::json_number_to_double(position[1], p.y, problem)) {
-        fail(index_path(index_path(path, v), 1), problem);
+      for (std::size_t k = 0; k < position.size(); ++k) {
+        double value = 0;
+        if (!io_detail::json_number_to_double(position[k], value, problem)) {
+          fail(index_path(index_path(path, v), k), problem);
+        }
+        if (k == 0) p.x = value;
+        if (k == 1) p.y = value;
       }
       ring.push_back(p);
     }
@@ -165,12 +169,13 @@ class GeoJsonReader {
   }
 
   MultiPolygon result_;
+  std::vector<std::string>* part_names_;
 };
 
 }  // namespace
 
-MultiPolygon read_geojson(std::string_view text) {
-  return GeoJsonReader().read(io_detail::parse_json(text, "GeoJSON"));
+MultiPolygon read_geojson(std::string_view text, std::vector<std::string>* part_names) {
+  return GeoJsonReader(part_names).read(io_detail::parse_json(text, "GeoJSON"));
 }
 
 }  // namespace mk

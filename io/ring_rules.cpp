@@ -102,8 +102,13 @@ int ring_orientation(const Ring& ring) {
   for (std::size_t i = 1; i < ring.size(); ++i) {
     if (lexicographically_less(ring[i], ring[low])) low = i;
   }
-  // Neighbours equal to the extreme vertex (repeated vertices) are skipped.
+  // A ring that passes through its extreme vertex twice (touching itself there) turns there
+  // once per pass, and the turns may differ: only its whole area decides.
   const std::size_t n = ring.size();
+  std::size_t visits = 0;  // runs of repeated copies count once
+  for (std::size_t i = 0; i < n; ++i) visits += ring[i] == ring[low] && !(ring[(i + n - 1) % n] == ring[low]);
+  if (visits > 1) return exact_area_sign(ring);
+  // Neighbours equal to the extreme vertex (repeated vertices) are skipped.
   std::size_t prev = (low + n - 1) % n;
   while (prev != low && ring[prev] == ring[low]) prev = (prev + n - 1) % n;
   std::size_t next = (low + 1) % n;

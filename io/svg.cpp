@@ -28,8 +28,10 @@ constexpr Style style_result{"#2ca02c", "#176117", 0.55};
 constexpr const char* colour_dangling = "#d62728";
 constexpr const char* colour_isolated = "#7b3fb0";
 
+// Pixel values with two decimals; anything that would print as "-0.00" prints as "0.00".
 void append_number(std::string& out, double v) {
   char buf[48];
+  if (std::abs(v) < 0.005) v = 0;
   const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 2);
   out.append(buf, r.ptr);
 }
@@ -49,16 +51,22 @@ class Canvas {
     hi_.y = std::max(hi_.y, p.y);
   }
 
-  // Fixes the scale. Halves are used so that the extent of coordinates near the largest
-  // double does not overflow; the map divides by the extent so that subnormal extents
-  // do not overflow either.
+  // Fixes the scale. Every coordinate is first multiplied by a power of two that brings the
+  // largest magnitude near 1: exact (no rounding) for coordinates near the largest double and
+  // for subnormal ones alike, so that the box's extent neither overflows (1.8e308 - -1.8e308)
+  // nor vanishes (the half of 5e-324 is 0). Only coordinates far below the largest, which are
+  // then far below one pixel too, can lose bits to underflow.
   void fit() {
     if (empty_) lo_ = hi_ = Point{0, 0};
-    half_w_ = hi_.x / 2 - lo_.x / 2;
-    half_h_ = hi_.y / 2 - lo_.y / 2;
-    extent_ = std::max(half_w_, half_h_);
-    const double w = extent_ > 0 ? half_w_ / extent_ * drawing_size : 0;
-    const double h = extent_ > 0 ? half_h_ / extent_ * drawing_size : 0;
+    const double largest = std::max({std::abs(lo_.x), std::abs(lo_.y), std::abs(hi_.x), std::abs(hi_.y)});
+    shift_ = largest > 0 ? -std::ilogb(largest) : 0;
+    lo_ = scaled(lo_);
+    hi_ = scaled(hi_);
+    const double extent_w = hi_.x - lo_.x;  // at most 4 after scaling
+    const double extent_h = hi_.y - lo_.y;
+    extent_ = std::max(extent_w, extent_h);
+    const double w = extent_ > 0 ? extent_w / extent_ * drawing_size : 0;
+    const double h = extent_ > 0 ? extent_h / extent_ * drawing_size : 0;
     width_ = std::max(w + 2 * margin, min_width);
     drawing_height_ = std::max(h, drawing_size / 12);  // a flat box still gets a strip
     height_ = drawing_height_ + 2 * margin + legend_height;
@@ -67,10 +75,10 @@ class Canvas {
   }
 
   double x(double v) const {
-    return offset_x_ + (extent_ > 0 ? (v / 2 - lo_.x / 2) / extent_ * drawing_size : 0);
+    return offset_x_ + (extent_ > 0 ? (std::ldexp(v, shift_) - lo_.x) / extent_ * drawing_size : 0);
   }
   double y(double v) const {
-    return offset_y_ + (extent_ > 0 ? (hi_.y / 2 - v / 2) / extent_ * drawing_size : 0);
+    return offset_y_ + (extent_ > 0 ? (hi_.y - std::ldexp(v, shift_)) / extent_ * drawing_size : 0);
   }
   double width() const { return width_; }
   double height() const { return height_; }
@@ -83,9 +91,12 @@ class Canvas {
   }
 
  private:
+  Point scaled(const Point& p) const { return {std::ldexp(p.x, shift_), std::ldexp(p.y, shift_)}; }
+
   bool empty_ = true;
-  Point lo_, hi_;
-  double half_w_ = 0, half_h_ = 0, extent_ = 0;
+  Point lo_, hi_;  // scaled by 2^shift_ once fitted
+  int shift_ = 0;
+  double extent_ = 0;
   double width_ = 0, height_ = 0, drawing_height_ = 0, offset_x_ = 0, offset_y_ = 0;
 };
 

@@ -37,9 +37,11 @@ inline std::string describe_position(std::string_view text, std::size_t offset) 
 }
 
 // Shortest text that reads back as the same double (std::to_chars without a format):
-// the writers never lose a bit, and 0.1 stays "0.1".
+// the writers never lose a bit, and 0.1 stays "0.1". Negative zero is written "0": it is
+// the same coordinate, and "-0" only puzzles readers.
 inline void append_double(std::string& out, double v) {
   char buf[32];
+  if (v == 0) v = 0;
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, r.ptr);
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/ring_rules.hpp"
@@ -70,15 +71,19 @@ GeometryKind kind_of(std::string_view upper) {
 
 bool is_dimension_tag(std::string_view upper) { return upper == "Z" || upper == "M" || upper == "ZM"; }
 
-// "POLYGONZ", "POLYGONM", "POLYGONZM": a known type glued to a dimension tag.
-bool is_type_with_dimension_suffix(std::string_view upper) {
+// Coordinates per vertex a dimension tag announces: Z and M add one, ZM two.
+int coordinates_of_tag(std::string_view upper) { return upper == "ZM" ? 4 : 3; }
+
+// "POLYGONZ", "POLYGONM", "POLYGONZM": a known type glued to a dimension tag (some writers
+// emit it). Returns the tag's length, 0 when the word is not of this form.
+std::size_t dimension_suffix_length(std::string_view upper) {
   for (const std::string_view suffix : {"ZM", "Z", "M"}) {
     if (upper.size() > suffix.size() && upper.ends_with(suffix) &&
         kind_of(upper.substr(0, upper.size() - suffix.size())) != GeometryKind::unknown) {
-      return true;
+      return suffix.size();
     }
   }
-  return false;
+  return 0;
 }
 
 bool is_non_finite_word(std::string_view token) {
@@ -96,7 +101,7 @@ struct Where {
 
 class WktReader {
  public:
-  explicit WktReader(std::string_view text) : text_(text) {}
+  WktReader(std::string_view text, std::vector<std::string>* part_names) : text_(text), part_names_(part_names) {}
 
   MultiPolygon read() {
     if (text_.starts_with("\xEF\xBB\xBF")) pos_ = 3;  // UTF-8 byte order mark
@@ -203,8 +208,17 @@ class WktReader {
     const std::string_view word = read_word();
     if (word.empty()) fail_expected("a geometry type such as POLYGON or MULTIPOLYGON");
     // Geometry keywords are short; a long word is unknown and is not copied whole.
-    const std::string upper = upper_case(word.substr(0, 32));
-    const GeometryKind kind = word.size() > 32 ? GeometryKind::unknown : kind_of(upper);
+    std::string upper = upper_case(word.substr(0, 32));
+    GeometryKind kind = word.size() > 32 ? GeometryKind::unknown : kind_of(upper);
+    bool glued_tag = false;
+    if (kind == GeometryKind::unknown && word.size() <= 32) {
+      if (const std::size_t tag = dimension_suffix_length(upper); tag > 0) {
+        glued_tag = true;
+        set_dimension(start, coordinates_of_tag(upper.substr(upper.size() - tag)), upper);
+        upper.resize(upper.size() - tag);
+        kind = kind_of(upper);
+      }
+    }
     switch (kind) {
       case GeometryKind::not_polygonal:
         fail(start, upper + " is not a polygonal geometry; expected POLYGON, MULTIPOLYGON or "
@@ -212,9 +226,6 @@ class WktReader {
       case GeometryKind::unsupported:
         fail(start, upper + " is not supported; use POLYGON or MULTIPOLYGON");
       case GeometryKind::unknown:
-        if (is_type_with_dimension_suffix(upper)) {
-          fail(start, upper + ": Z and M coordinates are not supported; give 2D coordinates");
-        }
         fail(start, "unknown geometry type '" + excerpt(word) + "'");
       case GeometryKind::collection:
         if (inside_collection) {
@@ -224,7 +235,7 @@ class WktReader {
         break;
       default: break;
     }
-    if (read_empty_or_open(upper)) {
+    if (read_empty_or_open(upper, !glued_tag)) {
       if (kind == GeometryKind::polygon) ++polygon_count_;
       return;
     }
@@ -248,22 +259,33 @@ class WktReader {
     }
   }
 
-  // After a keyword: true for EMPTY; false after consuming '('. Rejects Z and M tags.
-  bool read_empty_or_open(std::string_view keyword) {
+  // After a keyword: true for EMPTY; false after consuming '('. A Z, M or ZM tag between
+  // them sets how many coordinates each vertex has (the extra ones are dropped).
+  bool read_empty_or_open(std::string_view keyword, bool tag_allowed = true) {
     skip_space();
     if (is_letter(peek())) {
       const std::size_t start = pos_;
       const std::string_view word = read_word();
       const std::string upper = upper_case(word.substr(0, 16));
       if (upper == "EMPTY" && word.size() == 5) return true;
-      if (is_dimension_tag(upper) && word.size() <= 2) {
-        fail(start, std::string(keyword) + " " + upper +
-                        ": Z and M coordinates are not supported; give 2D coordinates");
+      if (tag_allowed && is_dimension_tag(upper) && word.size() <= 2) {
+        set_dimension(start, coordinates_of_tag(upper), std::string(keyword) + " " + upper);
+        return read_empty_or_open(keyword, false);
       }
       pos_ = start;
     }
     expect('(', "'(' or EMPTY after " + std::string(keyword));
     return false;
+  }
+
+  // Every vertex of an input has the same number of coordinates: 2 (x y), 3 (x y z or
+  // x y m) or 4 (x y z m), fixed by the first tag or the first vertex.
+  void set_dimension(std::size_t at, int coordinates, const std::string& what) {
+    if (coordinates_ != 0 && coordinates_ != coordinates) {
+      fail(at, what + " has " + std::to_string(coordinates) + " coordinates per vertex, but the vertices before have " +
+                   std::to_string(coordinates_));
+    }
+    coordinates_ = coordinates;
   }
 
   // A polygon's ring list; the opening '(' has been consumed.
@@ -301,6 +323,7 @@ class WktReader {
       where_.ring = -1;
     } while (next_in_list("',' or ')' after a ring"));
     result_.push_back(std::move(polygon));
+    if (part_names_ != nullptr) part_names_->push_back("polygon " + std::to_string(where_.polygon));
     where_.polygon = -1;
   }
 
@@ -316,9 +339,18 @@ class WktReader {
       const double x = read_coordinate("x");
       const double y = read_coordinate("y");
       ring.push_back(Point{x, y});
-      skip_space();
-      if (is_number_char(peek())) {
-        fail(pos_, "vertex has more than 2 coordinates; Z and M coordinates are not supported");
+      // Z and M, checked like x and y and then dropped: the operation is planar.
+      int count = 2;
+      for (skip_space(); count < 5 && is_number_char(peek()); skip_space()) {
+        read_coordinate(count == 2 ? "third" : "fourth");
+        ++count;
+      }
+      if (count > 4) fail(pos_, "vertex has more than 4 coordinates; at most x y z m");
+      if (coordinates_ == 0) coordinates_ = count;
+      if (count != coordinates_) {
+        fail(last_vertex, "vertex has " + std::to_string(count) + " coordinates, but " +
+                              (coordinates_ == 2 ? std::string("the vertices before have 2")
+                                                 : "this input's vertices have " + std::to_string(coordinates_)));
       }
       if (!next_in_list("',' or ')' after a vertex")) break;
     }
@@ -340,12 +372,16 @@ class WktReader {
   std::string_view text_;
   std::size_t pos_ = 0;
   std::size_t polygon_count_ = 0;
+  int coordinates_ = 0;  // per vertex, once known: 2, 3 (Z or M) or 4 (ZM)
   Where where_;
   MultiPolygon result_;
+  std::vector<std::string>* part_names_;
 };
 
 }  // namespace
 
-MultiPolygon read_wkt(std::string_view text) { return WktReader(text).read(); }
+MultiPolygon read_wkt(std::string_view text, std::vector<std::string>* part_names) {
+  return WktReader(text, part_names).read();
+}
 
 }  // namespace mk

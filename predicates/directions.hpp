@@ -20,6 +20,22 @@ struct Direction {
   friend bool operator==(const Direction&, const Direction&) = default;
 };
 
+// The sector test, written once for every kind of direction: whether d lies strictly inside
+// the counterclockwise sweep from `first` to `last`; when first and last point the same way
+// the sweep is the full turn less that direction. `compare(u, v)` orders directions by
+// angle, counterclockwise from any fixed reference direction (negative: u comes first;
+// zero: the same direction), which makes the sweep an interval of that order or the
+// complement of one.
+template <class D, class Compare>
+bool is_in_ccw_sweep(const D& first, const D& last, const D& d, Compare&& compare) {
+  const Sign fl = compare(first, last);
+  const Sign fd = compare(first, d);
+  if (fl == Sign::zero) return fd != Sign::zero;
+  const Sign dl = compare(d, last);
+  if (fl == Sign::negative) return fd == Sign::negative && dl == Sign::negative;
+  return fd == Sign::negative || dl == Sign::negative;
+}
+
 template <Kernel K>
 class DirectionOrder {
  public:
@@ -42,15 +58,10 @@ class DirectionOrder {
     return -K::orient_vectors(points_[a.from], points_[a.to], points_[b.from], points_[b.to]);
   }
 
-  // Whether d lies strictly inside the counterclockwise sweep from `first` to `last`.
-  // When first and last coincide the sweep is the full turn less that one direction.
+  // Whether d lies strictly inside the counterclockwise sweep from `first` to `last`
+  // (is_in_ccw_sweep, in the order of `compare`).
   bool is_in_ccw_sector(Direction first, Direction last, Direction d) const {
-    const Sign fl = compare(first, last);
-    const Sign fd = compare(first, d);
-    if (fl == Sign::zero) return fd != Sign::zero;
-    const Sign dl = compare(d, last);
-    if (fl == Sign::negative) return fd == Sign::negative && dl == Sign::negative;
-    return fd == Sign::negative || dl == Sign::negative;
+    return is_in_ccw_sweep(first, last, d, [this](Direction u, Direction v) { return compare(u, v); });
   }
 
   // Signed turn from direction a to direction b, counted in whole crossings of angle 0:

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is needed, builds in Release with warnings as
 # errors and runs every test suite, then runs the unit tests again under AddressSanitizer and
-# UndefinedBehaviorSanitizer, then fuzzes each input parser for a bounded time.
+# UndefinedBehaviorSanitizer, then fuzzes each input parser and the whole operation for a
+# bounded time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -19,7 +20,7 @@ ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-asan -j "$jobs" --output-on-failure -LE slow
 
 if [ -x fuzz/run.sh ] || [ -f fuzz/run.sh ]; then
-  echo "== Fuzzing the parsers"
+  echo "== Fuzzing the parsers and the whole operation"
   bash fuzz/run.sh 25
 fi
 echo "== all tests passed"

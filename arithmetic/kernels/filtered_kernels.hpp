@@ -4,57 +4,16 @@
 // are exact on the rounded coordinates.
 #pragma once
 
-#include <array>
-#include <string>
 #include <string_view>
 
 #include "arithmetic/adaptive.hpp"
 #include "arithmetic/interval_filter.hpp"
-#include "kernel/kernel.hpp"
-#include "arithmetic/along.hpp"
-#include "arithmetic/formulas.hpp"
+#include "arithmetic/kernels/rounded_crossing_kernel.hpp"
 
 namespace mk {
 
-// The shared shape of the two kernels: Predicates supplies exact orient2d and orient_vectors.
-template <class Predicates, const char* Name>
-struct RoundedCrossingKernel {
-  using Point = mk::Point;
-  using Vertex = mk::Point;
-  static constexpr std::string_view name = Name;
-  static constexpr bool is_exact = false;
-
-  static Point point(const mk::Point& p) { return p; }
-  static Sign compare_x(const Point& a, const Point& b) { return a.x < b.x ? Sign::negative : (b.x < a.x ? Sign::positive : Sign::zero); }
-  static Sign compare_y(const Point& a, const Point& b) { return a.y < b.y ? Sign::negative : (b.y < a.y ? Sign::positive : Sign::zero); }
-  static Sign orient2d(const Point& a, const Point& b, const Point& c) {
-    return static_cast<Sign>(Predicates::orient2d(a.x, a.y, b.x, b.y, c.x, c.y));
-  }
-  static Sign orient_vectors(const Point& p1, const Point& q1, const Point& p2, const Point& q2) {
-    return static_cast<Sign>(Predicates::orient_vectors(p1.x, p1.y, q1.x, q1.y, p2.x, p2.y, q2.x, q2.y));
-  }
-  static Vertex vertex(const Point& p) { return p; }
-  static Vertex crossing(const Point& a0, const Point& a1, const Point& b0, const Point& b1) {
-    Vertex v;
-    formula::line_crossing<double>(a0.x, a0.y, a1.x, a1.y, b0.x, b0.y, b1.x, b1.y, v.x, v.y);
-    return v;
-  }
-  static Sign compare_vertices(const Vertex& a, const Vertex& b) {
-    const Sign s = compare_x(a, b);
-    return s != Sign::zero ? s : compare_y(a, b);
-  }
-  static Sign compare_along(const Point& s, const Point& d, const Vertex& u, const Vertex& v) {
-    return compare_along_lexicographic<RoundedCrossingKernel>(s, d, u, v);
-  }
-  static Sign orient_vertices(const Vertex& a, const Vertex& b, const Vertex& c) { return orient2d(a, b, c); }
-  static mk::Point approx(const Vertex& v) { return v; }
-  static std::array<std::string, 2> exact_coordinates(const Vertex&) { return {}; }
-};
-
-inline constexpr char kIntervalKernelName[] = "interval";
-inline constexpr char kAdaptiveKernelName[] = "adaptive";
-
 struct IntervalPredicates {
+  static constexpr std::string_view name = "interval";
   static int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
     return interval_filter::orient2d(ax, ay, bx, by, cx, cy);
   }
@@ -64,6 +23,7 @@ struct IntervalPredicates {
 };
 
 struct AdaptivePredicates {
+  static constexpr std::string_view name = "adaptive";
   static int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
     return adaptive::orient2d(ax, ay, bx, by, cx, cy);
   }
@@ -73,8 +33,8 @@ struct AdaptivePredicates {
 };
 
 // The paper's approach: interval filter with multiprecision fallback [MK89 §3.3].
-using IntervalKernel = RoundedCrossingKernel<IntervalPredicates, kIntervalKernelName>;
+using IntervalKernel = RoundedCrossingKernel<IntervalPredicates>;
 // Shewchuk's adaptive expansions [Sh97].
-using AdaptiveKernel = RoundedCrossingKernel<AdaptivePredicates, kAdaptiveKernelName>;
+using AdaptiveKernel = RoundedCrossingKernel<AdaptivePredicates>;
 
 }  // namespace mk

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "arithmetic/kernels/rational_kernel.hpp"
+#include "arithmetic/shoelace.hpp"
 #include "core/boolean_op.hpp"
 
 namespace mk::bench {
@@ -20,29 +21,26 @@ namespace mk::bench {
 // The area of an exact kernel's regular result, rounded to the nearest double. Not as
 // mk::compute forms it (one reduced rational): over k crossing points that sum's
 // denominator is the lcm of k different denominators, megabytes long at star n = 1e4,
-// where mk::compute spends minutes on it. Here each shoelace term is exact (mpq) and the
-// terms are added in 1024-bit floats: the sum's error, below n 2^-1000 times the sum of
-// |terms|, is far below half an ulp of any area these workloads produce, so rounding the
-// sum gives the nearest double of the exact area.
+// where mk::compute spends seconds on it. Here each shoelace term (arithmetic/shoelace.hpp)
+// is exact (mpq) and the terms are added in 1024-bit floats: the sum's error, below
+// n 2^-1000 times the sum of |terms|, is far below half an ulp of any area these workloads
+// produce, so rounding the sum gives the nearest double of the exact area.
 template <Kernel K>
 double exact_area_nearest(const BooleanResult<K>& r) {
   static_assert(K::is_exact);
   if (r.unbounded) return std::numeric_limits<double>::quiet_NaN();
   constexpr mp_bitcnt_t precision = 1024;
   mpf_class total(0, precision);
-  std::vector<mpq_class> xy;
+  std::vector<RationalPoint> ring;
   for (const ResultCycle& c : r.cycles) {
-    const std::size_t n = c.vertices.size();
-    if (n < 3) continue;
-    xy.clear();
+    if (c.vertices.size() < 3) continue;
+    ring.clear();
     for (const int v : c.vertices) {
-      for (const std::string& s : K::exact_coordinates(r.vertex(v))) xy.emplace_back(s);
+      const auto xy = K::exact_coordinates(r.vertex(v));
+      ring.push_back({mpq_class(xy[0]), mpq_class(xy[1])});
     }
     mpf_class twice(0, precision);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t j = (i + 1) % n;
-      twice += mpf_class(mpq_class(xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1]), precision);
-    }
+    for_each_shoelace_term<mpq_class>(ring, [&](const mpq_class& t) { twice += mpf_class(t, precision); });
     const mpf_class area = abs(twice) / 2;
     total += c.type == PolygonType::island ? area : mpf_class(-area);
   }
@@ -56,18 +54,12 @@ double exact_area_nearest(const BooleanResult<K>& r) {
 template <Kernel K>
 double rounded_area(const BooleanResult<K>& r) {
   if (r.unbounded) return std::numeric_limits<double>::quiet_NaN();
-  double total = 0;
-  for (const ResultCycle& c : r.cycles) {
-    if (c.vertices.size() < 3) continue;
-    double twice = 0;
-    for (std::size_t i = 0; i < c.vertices.size(); ++i) {
-      const Point p = K::approx(r.vertex(c.vertices[i]));
-      const Point q = K::approx(r.vertex(c.vertices[(i + 1) % c.vertices.size()]));
-      twice += p.x * q.y - q.x * p.y;
-    }
-    total += (c.type == PolygonType::island ? 0.5 : -0.5) * std::abs(twice);
-  }
-  return total;
+  const auto ring = [&](const ResultCycle& c) {
+    std::vector<Point> out;
+    for (const int v : c.vertices) out.push_back(K::approx(r.vertex(v)));
+    return out;
+  };
+  return typed_area<double>(r.cycles, ring, [](const ResultCycle& c) { return c.type == PolygonType::island; });
 }
 
 template <Kernel K>

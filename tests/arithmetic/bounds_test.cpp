@@ -7,6 +7,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "arithmetic/adaptive.hpp"
 #include "arithmetic/adaptive_bounds.hpp"
 #include "arithmetic/interval_filter.hpp"
 
@@ -102,8 +103,39 @@ TEST(arith_bounds, safe_range_keeps_the_expansion_stages_normal_and_finite) {
   // Differences <= 2^501, products <= 2^1003, 16 components <= 2^1008: far from overflow.
   const mpq_class diff = 2 * mpq_class(mk::adaptive::safe_max);
   EXPECT_LT(16 * diff * diff * pow(one + u, 4), mpq_class(DBL_MAX));
-  // fit_into_safe_range puts the largest input below 2^500 and needs the smallest >= 2^-400.
-  EXPECT_EQ(499 - (-400), 899);
+}
+
+// fit_into_safe_range scales inputs whose magnitudes span up to 899 binades into
+// [safe_min, safe_max] by one power of two (exact, every ratio kept), and refuses a span of
+// 900: the limit the argument above relies on, checked at both sides and across the range.
+TEST(arith_bounds, fit_into_safe_range_takes_spans_up_to_899_binades) {
+  using mk::adaptive::detail::CrossInput;
+  using mk::adaptive::detail::fit_into_safe_range;
+  for (const int top : {1023, 900, 500, 0, -100, -174}) {
+    for (const int span : {0, 1, 600, 899, 900, 1000}) {
+      const int bottom = top - span;
+      if (bottom < -1074) continue;
+      const double large = std::ldexp(1.5, top), small = -std::ldexp(1.25, bottom);  // ilogb: top, bottom
+      CrossInput in{large, small, 0.0, -small, -large, large, small, 0.0};
+      const CrossInput before = in;
+      const bool fits = fit_into_safe_range(in);
+      const bool in_range = std::fabs(large) <= mk::adaptive::safe_max && std::fabs(small) >= mk::adaptive::safe_min;
+      EXPECT_EQ(fits, span <= 899 || in_range) << "top " << top << " span " << span;
+      if (!fits) continue;
+      const double* a = &before.p1x;
+      const double* b = &in.p1x;
+      for (int i = 0; i < 8; ++i) {
+        if (b[i] == 0) {
+          EXPECT_EQ(a[i], 0);
+          continue;
+        }
+        EXPECT_GE(std::fabs(b[i]), mk::adaptive::safe_min) << "top " << top << " span " << span << " input " << i;
+        EXPECT_LE(std::fabs(b[i]), mk::adaptive::safe_max) << "top " << top << " span " << span << " input " << i;
+        // One power of two for all: the ratio to the first input is unchanged, exactly.
+        EXPECT_EQ(mpq_class(b[i]) / mpq_class(b[0]), mpq_class(a[i]) / mpq_class(a[0]));
+      }
+    }
+  }
 }
 
 }  // namespace

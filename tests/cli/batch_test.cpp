@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "api/mkbool.hpp"
+#include "tests/cli/canonical_wkt.hpp"
 #include "tests/cli/cli_support.hpp"
 
 namespace mk::test {
@@ -40,7 +41,7 @@ TEST(cliBatch, BadLineInTheMiddleDoesNotStopTheBatch) {
   ASSERT_EQ(lines.size(), 3u) << r.out;
   EXPECT_EQ(lines[0]["id"], 1);
   EXPECT_FALSE(lines[0].contains("error"));
-  EXPECT_EQ(lines[0]["result_wkt"], "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))");
+  EXPECT_EQ(canonical_wkt(lines[0]["result_wkt"].get<std::string>()), canonical_wkt("POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))"));
   EXPECT_TRUE(lines[1]["id"].is_null());
   EXPECT_EQ(lines[1]["line"], 2);
   EXPECT_NE(lines[1]["error"].get<std::string>().find("malformed JSON"), std::string::npos) << lines[1];
@@ -100,8 +101,8 @@ TEST(cliBatch, OutputLinesHaveTheDocumentedFieldsAndExactAreas) {
     for (const auto& line : lines) {
       std::vector<std::string> keys;
       for (const auto& item : line.items()) keys.push_back(item.key());
-      EXPECT_EQ(keys, (std::vector<std::string>{"id", "op", "kernel", "result_wkt", "area", "area_exact", "valid",
-                                                "op_ns", "line"}))
+      EXPECT_EQ(keys, (std::vector<std::string>{"id", "op", "kernel", "result_wkt", "area", "area_beyond_double",
+                                                "area_exact", "valid", "op_ns", "line"}))
           << line;
       EXPECT_EQ(line["kernel"], std::string(kernel));
       if (is_exact_kernel(kernel)) {
@@ -153,6 +154,80 @@ TEST(cliBatch, FileInputAndAtomicOutput) {
   const ProcessResult directory = run_mkbool({"batch", dir.path().string()});
   EXPECT_EQ(directory.exit_code, 3) << describe(directory);
   EXPECT_NE(directory.err.find("is a directory"), std::string::npos);
+}
+
+TEST(cliBatch, MillionLevelNestingNeverStopsTheBatch) {
+  // issue 10, item 2: 100,000 nested arrays in an ignored member overflowed the stack while
+  // the line was parsed (ordered_json copies its values when an object grows). Each deep
+  // line sits between good ones: ignored members of any depth are fine, an id deeper than
+  // 1000 levels or a deep value where a string belongs is that line's error, an unclosed
+  // one is malformed JSON.
+  constexpr std::size_t n = 1'000'000;
+  const std::string arrays = std::string(n, '[') + std::string(n, ']');
+  const std::string objects = [&] {
+    std::string s;
+    for (std::size_t i = 0; i < n; ++i) s += "{\"a\":";
+    return s + "1" + std::string(n, '}');
+  }();
+  const std::string rest = "\"op\":\"union\",\"a_wkt\":\"" + square_a + "\",\"b_wkt\":\"" + square_b + "\"";
+  const std::string input = "{\"x\":" + arrays + ",\"id\":1," + rest + ",\"y\":" + objects + "}\n" +  //
+                            "{\"id\":" + arrays + "," + rest + "}\n" +                                     //
+                            "{\"id\":3,\"op\":" + objects + ",\"a_wkt\":\"" + square_a + "\"}\n" +     //
+                            std::string(n, '[') + "\n" +                                                    //
+                            "{\"id\":5,\"op\":\"union\",\"a_wkt\":" + arrays + "," + rest.substr(rest.find("\"b_wkt")) + "}\n" +
+                            "{\"id\":" + std::string(1000, '[') + std::string(1000, ']') + "," + rest + "}\n" +
+                            case_line(7, "union", square_a, square_b);
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 7u) << r.out.substr(0, 2000);
+  const char* errors[] = {nullptr, "\"id\" nests deeper than 1000 levels", "\"op\" is not a string",
+                          "malformed JSON", "\"a_wkt\" is not a string", nullptr, nullptr};
+  for (std::size_t i = 0; i < 7; ++i) {
+    EXPECT_EQ(lines[i]["line"], i + 1);
+    if (errors[i] == nullptr) {
+      EXPECT_FALSE(lines[i].contains("error")) << lines[i].dump().substr(0, 300);
+      EXPECT_EQ(lines[i]["area_exact"], "7");
+    } else {
+      ASSERT_TRUE(lines[i].contains("error")) << lines[i].dump().substr(0, 300);
+      EXPECT_NE(lines[i]["error"].get<std::string>().find(errors[i]), std::string::npos) << lines[i]["error"];
+    }
+  }
+  EXPECT_EQ(lines[0]["id"], 1);
+  EXPECT_EQ(lines[6]["id"], 7);
+  // The 1000-level id is echoed whole.
+  EXPECT_EQ(lines[5]["id"].dump(), std::string(1000, '[') + std::string(1000, ']'));
+}
+
+TEST(cliBatch, MultiPartCasesAreCheckedAsTheCommandChecksThem) {
+  // issue 10, item 4: the same square twice intersected to EMPTY; now that line is refused
+  // by name and the lines around it are answered.
+  const std::string twice = "MULTIPOLYGON(((0 0,10 0,10 10,0 10,0 0)),((0 0,10 0,10 10,0 10,0 0)))";
+  const std::string input = case_line(1, "union", square_a, square_b) + case_line(2, "intersection", twice, twice) +
+                            case_line(3, "union", square_a, "POLYGON((0 0,1 0,1 1,0 0),(5 5,6 5,6 6,5 5))") +
+                            case_line(4, "union", square_a, square_b);
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 4u) << r.out;
+  EXPECT_EQ(lines[0]["area_exact"], "7");
+  EXPECT_EQ(lines[1]["error"], "a_wkt: polygon 1 repeats polygon 0 (their shells are the same ring); the parts of a "
+                               "multi-part polygon must not overlap (read by nesting, the overlap would become a hole: "
+                               "merge the parts first)");
+  EXPECT_NE(lines[2]["error"].get<std::string>().find("b_wkt: polygon 0, ring 1 (a hole) lies outside its shell"),
+            std::string::npos)
+      << lines[2];
+  EXPECT_EQ(lines[3]["area_exact"], "7");
+}
+
+TEST(cliBatch, InvalidUtf8IsThatLinesErrorAndTheOutputStaysUtf8) {
+  const std::string input = "{\"id\":\"\xff\xfe\",\"op\":\"union\"}\n" + case_line(2, "union", square_a, square_b);
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);  // nlohmann refuses invalid UTF-8: the output has none
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[0]["error"].get<std::string>().find("ill-formed UTF-8"), std::string::npos) << lines[0];
+  EXPECT_EQ(lines[1]["area_exact"], "7");
 }
 
 TEST(cliBatch, EmptyBatchWritesNothing) {

@@ -1,24 +1,20 @@
-// Canonical form of a result for exact comparison: each irreducible polygon rotated to start
-// at its smallest vertex, with its type, and the list sorted. Exact kernels are compared by
-// their exact rational vertices; inexact ones by their rounded doubles.
+// Canonical form of a result for exact comparison (core/canonical.hpp) over exact rational
+// vertices: exact kernels by their exact coordinates, inexact ones by their rounded doubles.
 #pragma once
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
+#include "core/canonical.hpp"
 #include "named_cases.hpp"
 #include "oracle.hpp"
 
 namespace mk::test {
 
-using Canonical = std::vector<std::pair<PolygonType, std::vector<std::pair<Q, Q>>>>;
+using Canonical = std::vector<CanonicalCycle<std::pair<Q, Q>>>;
 
-inline Canonical canonical(Canonical cycles) {
-  for (auto& [type, v] : cycles) std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
-  std::sort(cycles.begin(), cycles.end());
-  return cycles;
-}
+inline Canonical canonical(Canonical cycles) { return mk::canonical(std::move(cycles)); }
 
 inline Canonical canonical(const std::vector<ExpectedCycle>& e) {
   Canonical c;

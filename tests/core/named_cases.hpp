@@ -148,11 +148,12 @@ inline std::vector<NamedCase> named_cases() {
                    {{kI, true, {}},
                     {kI, false, {isl({{0, 2}, {1, 2}}), isl({{2, 0}})}},
                     {kU, true, {isl({{0, 0}, {2, 0}, {2, 2}, {1, 2}, {1, 3}, {0, 3}, {0, 2}}), isl(box(2, -1, 3, 0))}}}});
-  // [MK89 Fig. 8] A of three irreducible parts, two of its vertices on B's edges.
-  cases.push_back({"paper_fig8", island({box(0, 0, 2, 2), box(3, 0, 5, 2), box(6, 0, 8, 2)}),
+  // [MK89 Fig. 8] A of three irreducible parts, two of its vertices on B's edges: (1, 2) on
+  // B's left edge, (4, 1) on its bottom edge (the middle part meets B only there).
+  cases.push_back({"paper_fig8", island({{{0, 0}, {2, 0}, {1, 2}}, {{3, 0}, {5, 0}, {4, 1}}, box(6, 0, 8, 2)}),
                    island({{{1, 1}, {7, 1}, {7, 4}, {1, 4}}}),
-                   {{kI, true, {isl({{1, 1}, {2, 1}, {2, 2}, {1, 2}}), isl({{3, 1}, {5, 1}, {5, 2}, {3, 2}}),
-                                isl({{6, 1}, {7, 1}, {7, 2}, {6, 2}})}}}});
+                   {{kI, true, {isl({{1, 1}, {1.5, 1}, {1, 2}}), isl({{6, 1}, {7, 1}, {7, 2}, {6, 2}})}},
+                    {kI, false, {isl({{1, 1}, {1.5, 1}, {1, 2}}), isl({{6, 1}, {7, 1}, {7, 2}, {6, 2}}), isl({{4, 1}})}}}});
   return cases;
 }
 

@@ -43,8 +43,9 @@ TEST(NamedCases, BothArgumentOrders) {
   }
 }
 
-// The naive kernel runs every named case without crashing; its disagreements are data.
-TEST(NamedCases, DoubleKernelRecordedNotAsserted) {
+// The naive kernel runs every named case to a result or a KernelFailure (inconsistent
+// predicates, reported), never another exception or a crash; its disagreements are data.
+TEST(NamedCases, DoubleKernelGivesAResultOrAKernelFailure) {
   int agree = 0, differ = 0, failed = 0;
   for (const auto& nc : named_cases()) {
     for (const auto& e : nc.expect) {
@@ -59,16 +60,13 @@ TEST(NamedCases, DoubleKernelRecordedNotAsserted) {
       } catch (const KernelFailure& ex) {
         ++failed;
         std::cout << "double failed: " << nc.name << ": " << ex.what() << "\n";
+      } catch (const std::exception& ex) {
+        ADD_FAILURE() << "double kernel on " << nc.name << ": not a KernelFailure: " << ex.what();
       }
     }
   }
   std::cout << "double kernel on named cases: " << agree << " agree, " << differ << " differ, " << failed
             << " kernel failures\n";
-  EXPECT_EQ(agree + differ + failed, [] {
-    int n = 0;
-    for (const auto& nc : named_cases()) n += static_cast<int>(nc.expect.size());
-    return n;
-  }());
 }
 
 }  // namespace

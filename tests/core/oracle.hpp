@@ -1,5 +1,6 @@
-// Test oracle: exact point location in input polygons and in results, and exact areas,
-// computed independently of the algorithm (plain crossing parity over rings, GMP rationals).
+// The core tests' view of the independent oracle (tests/oracle/membership.hpp): exact
+// locations in inputs and results, and exact areas by the project's one shoelace, computed
+// without the core.
 #pragma once
 
 #include <gmpxx.h>
@@ -8,15 +9,16 @@
 #include <vector>
 
 #include "arithmetic/kernels/rational_kernel.hpp"
+#include "arithmetic/shoelace.hpp"
 #include "core/boolean_op.hpp"
+#include "tests/oracle/membership.hpp"
 
 namespace mk::test {
 
 using Q = mpq_class;
 using QPoint = RationalPoint;
 using QRing = std::vector<QPoint>;
-
-enum class Location { outside, boundary, inside };
+using oracle::Location;
 
 inline QPoint qp(double x, double y) { return {Q(x), Q(y)}; }
 
@@ -24,56 +26,14 @@ inline Q cross(const QPoint& o, const QPoint& a, const QPoint& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-// p on the closed segment ab.
-inline bool on_segment(const QPoint& a, const QPoint& b, const QPoint& p) {
-  if (cross(a, b, p) != 0) return false;
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-         p.y <= std::max(a.y, b.y);
-}
+inline bool on_segment(const QPoint& a, const QPoint& b, const QPoint& p) { return oracle::is_on_segment(a, b, p); }
 
-// Crossing parity of a ray to +x from p (p not on the ring).
-inline bool ring_contains(const QRing& r, const QPoint& p) {
-  bool in = false;
-  for (std::size_t i = 0, n = r.size(); i < n; ++i) {
-    const QPoint& a = r[i];
-    const QPoint& b = r[(i + 1) % n];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const Q x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (x > p.x) in = !in;
-    }
-  }
-  return in;
-}
-
-inline bool ring_touches(const QRing& r, const QPoint& p) {
-  if (r.size() == 1) return r[0] == p;
-  for (std::size_t i = 0, n = r.size(); i < n; ++i) {
-    if (on_segment(r[i], r[(i + 1) % n], p)) return true;
-  }
-  return false;
-}
-
-// The location of p in a polygon of the paper's model: FAR by the parity of the rings
-// around p (nesting), hole type complemented, boundary when p is on any ring.
+// The location of p in a polygon of the paper's model.
 inline Location locate(const std::vector<QRing>& rings, PolygonType type, const QPoint& p) {
-  bool in = false;
-  for (const auto& r : rings) {
-    if (ring_touches(r, p)) return Location::boundary;
-    if (r.size() >= 3 && ring_contains(r, p)) in = !in;
-  }
-  if (type == PolygonType::hole) in = !in;
-  return in ? Location::inside : Location::outside;
+  return oracle::locate(oracle::Region{rings, type == PolygonType::hole}, p);
 }
 
-inline std::vector<QRing> to_qrings(const Polygon& p) {
-  std::vector<QRing> out;
-  for (const auto& r : p.rings) {
-    QRing q;
-    for (const auto& v : r) q.push_back(qp(v.x, v.y));
-    out.push_back(q);
-  }
-  return out;
-}
+inline std::vector<QRing> to_qrings(const Polygon& p) { return oracle::region_of(p).rings; }
 
 inline std::vector<QRing> result_rings(const BooleanResult<RationalKernel>& r) {
   std::vector<QRing> out;
@@ -89,48 +49,39 @@ inline Location locate(const BooleanResult<RationalKernel>& r, const QPoint& p) 
   return locate(result_rings(r), r.unbounded ? PolygonType::hole : PolygonType::island, p);
 }
 
-inline Q signed_area(const QRing& r) {
-  Q a = 0;
-  for (std::size_t i = 0, n = r.size(); i < n; ++i) {
-    a += r[i].x * r[(i + 1) % n].y - r[(i + 1) % n].x * r[i].y;
-  }
-  return a / 2;
-}
-
-// Area of a bounded polygon of the paper's model: rings at even nesting depth add, odd subtract.
+// Area of a bounded polygon of the paper's model: rings at even nesting depth add, odd
+// subtract; a ring's depth is decided at the midpoint of one of its edges on no other ring.
 inline Q area(const std::vector<QRing>& rings) {
   Q total = 0;
   for (std::size_t i = 0; i < rings.size(); ++i) {
     if (rings[i].size() < 3) continue;
-    // Depth: rings containing an interior point of one of ring i's edges not on them.
     int depth = 0;
     for (std::size_t j = 0; j < rings.size(); ++j) {
       if (j == i || rings[j].size() < 3) continue;
+      const oracle::Region other{{rings[j]}, false};
       for (std::size_t k = 0; k < rings[i].size(); ++k) {
         const QPoint& a = rings[i][k];
         const QPoint& b = rings[i][(k + 1) % rings[i].size()];
-        const QPoint m{(a.x + b.x) / 2, (a.y + b.y) / 2};
-        if (ring_touches(rings[j], m)) continue;
-        if (ring_contains(rings[j], m)) ++depth;
+        const Location l = oracle::locate(other, {(a.x + b.x) / 2, (a.y + b.y) / 2});
+        if (l == Location::boundary) continue;
+        if (l == Location::inside) ++depth;
         break;
       }
     }
-    const Q a = abs(signed_area(rings[i]));
+    const Q a = abs(twice_signed_area<Q>(rings[i])) / 2;
     total += depth % 2 == 0 ? a : Q(-a);
   }
   return total;
 }
 
+// Area of a bounded result from its typed cycles: islands add, holes subtract.
 inline Q area(const BooleanResult<RationalKernel>& r) {
-  Q total = 0;
-  for (const auto& c : r.cycles) {
-    if (c.vertices.size() < 3) continue;
-    QRing q;
-    for (const int v : c.vertices) q.push_back(r.vertex(v));
-    const Q a = abs(signed_area(q));
-    total += c.type == PolygonType::island ? a : Q(-a);
-  }
-  return total;
+  std::vector<std::size_t> index(r.cycles.size());
+  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
+  const std::vector<QRing> rings = result_rings(r);
+  return typed_area<Q>(
+      index, [&](std::size_t i) -> const QRing& { return rings[i]; },
+      [&](std::size_t i) { return r.cycles[i].type == PolygonType::island; });
 }
 
 // The result fed back as an input polygon (the paper's model keeps types and degenerate parts).

@@ -107,12 +107,19 @@ TEST(ioGeoJson, RejectsRingsWithTooFewPoints) {
       "GeoJSON at coordinates[1][1]: ring has fewer than 3 distinct points"));
 }
 
+TEST(ioGeoJson, ReadsAltitudeAndDropsIt) {
+  // issue 10, item 5: RFC 7946 §3.1.1 allows an altitude (and, discouraged, more elements).
+  const MultiPolygon mp = read_geojson(polygon_json("[[[0,0,5],[1,0,6.5],[0,1],[0,0,1,2]]]"));
+  ASSERT_EQ(mp.size(), 1u);
+  EXPECT_EQ(mp[0].shell, (Ring{{0, 0}, {1, 0}, {0, 1}}));
+  EXPECT_TRUE(rejects([] { read_geojson(polygon_json(R"([[[0,0],[1,0,"high"],[0,1],[0,0]]])")); },
+                      "GeoJSON at coordinates[0][1][2]: expected a number, found a string"));
+  EXPECT_TRUE(rejects([] { read_geojson(polygon_json("[[[0,0],[1,0,1e999],[0,1],[0,0]]]")); }, "1e999"));
+}
+
 TEST(ioGeoJson, RejectsBadPositions) {
-  EXPECT_TRUE(rejects([] { read_geojson(polygon_json("[[[0,0],[1,0,5],[0,1],[0,0]]]")); },
-                      "GeoJSON at coordinates[0][1]: position has 3 coordinates; altitude (Z) "
-                      "and further coordinates are not supported"));
   EXPECT_TRUE(rejects([] { read_geojson(polygon_json("[[[0,0],[1],[0,1],[0,0]]]")); },
-                      "GeoJSON at coordinates[0][1]: position has 1 coordinates; expected [x, y]"));
+                      "GeoJSON at coordinates[0][1]: position has 1 coordinates; expected [x, y] or [x, y, altitude]"));
   EXPECT_TRUE(rejects([] { read_geojson(polygon_json(R"([[[0,0],[1,"0"],[0,1],[0,0]]])")); },
                       "GeoJSON at coordinates[0][1][1]: expected a number, found a string"));
   EXPECT_TRUE(rejects([] { read_geojson(polygon_json("[[[0,0],[1,null],[0,1],[0,0]]]")); },

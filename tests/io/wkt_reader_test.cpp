@@ -198,16 +198,42 @@ TEST(ioWktReader, RejectsNestedGeometryCollection) {
                       "WKT line 1, column 21: nested GEOMETRYCOLLECTION is not supported"));
 }
 
-TEST(ioWktReader, RejectsZAndM) {
-  EXPECT_TRUE(rejects([] { read_wkt("POLYGON Z ((0 0 0, 1 0 0, 0 1 0, 0 0 0))"); },
-                      "WKT line 1, column 9: POLYGON Z: Z and M coordinates are not supported"));
-  EXPECT_TRUE(rejects([] { read_wkt("polygon zm EMPTY"); }, "POLYGON ZM: Z and M coordinates"));
-  EXPECT_TRUE(rejects([] { read_wkt("MULTIPOLYGON M EMPTY"); }, "MULTIPOLYGON M: Z and M"));
-  EXPECT_TRUE(rejects([] { read_wkt("POLYGONZ ((0 0 0, 1 0 0, 0 1 0, 0 0 0))"); },
-                      "WKT line 1, column 1: POLYGONZ: Z and M coordinates are not supported"));
-  EXPECT_TRUE(rejects([] { read_wkt("POLYGON ((0 0 0, 1 0 0, 0 1 0, 0 0 0))"); },
-                      "WKT line 1, column 15 (polygon 0, ring 0, vertex 0): vertex has more than "
-                      "2 coordinates"));
+TEST(ioWktReader, ReadsZAndMAndDropsThem) {
+  // issue 10, item 5: Z and M are common in the wild; the operation is planar.
+  const Ring triangle{{0, 0}, {1, 0}, {0, 1}};
+  for (const char* text : {"POLYGON Z ((0 0 5, 1 0 6, 0 1 7, 0 0 5))", "POLYGONZ ((0 0 5, 1 0 6, 0 1 7, 0 0 5))",
+                           "polygon m ((0 0 5, 1 0 6, 0 1 7, 0 0 5))", "POLYGON ((0 0 5, 1 0 6, 0 1 7, 0 0 5))",
+                           "POLYGON ZM ((0 0 5 1, 1 0 6 1, 0 1 7 1, 0 0 5 1))",
+                           "POLYGON ((0 0 5 1, 1 0 6 1, 0 1 7 1, 0 0 5 1))",
+                           "MULTIPOLYGON Z (((0 0 -1e300, 1 0 0, 0 1 0, 0 0 1)))",
+                           "GEOMETRYCOLLECTION Z (POLYGON Z ((0 0 5, 1 0 6, 0 1 7, 0 0 5)), POLYGON EMPTY)"}) {
+    SCOPED_TRACE(text);
+    const MultiPolygon mp = read_wkt(text);
+    ASSERT_EQ(mp.size(), 1u);
+    EXPECT_EQ(mp[0].shell, triangle);
+  }
+  EXPECT_TRUE(read_wkt("polygon zm EMPTY").empty());
+  EXPECT_TRUE(read_wkt("MULTIPOLYGON M EMPTY").empty());
+  // The closing vertex is compared in x and y only.
+  EXPECT_EQ(read_wkt("POLYGON Z ((0 0 1, 1 0 1, 0 1 1, 0 0 2))")[0].shell, triangle);
+}
+
+TEST(ioWktReader, RejectsInconsistentOrBadExtraCoordinates) {
+  EXPECT_TRUE(rejects([] { read_wkt("POLYGON Z ((0 0, 1 0, 0 1, 0 0))"); },
+                      "WKT line 1, column 13 (polygon 0, ring 0, vertex 0): vertex has 2 coordinates, but this "
+                      "input's vertices have 3"));
+  EXPECT_TRUE(rejects([] { read_wkt("POLYGON ((0 0 0, 1 0, 0 1 0, 0 0 0))"); },
+                      "(polygon 0, ring 0, vertex 1): vertex has 2 coordinates, but this input's vertices have 3"));
+  EXPECT_TRUE(rejects([] { read_wkt("POLYGON ((0 0, 1 0 0, 0 1, 0 0))"); },
+                      "vertex has 3 coordinates, but the vertices before have 2"));
+  EXPECT_TRUE(rejects([] { read_wkt("POLYGON ZM ((0 0 0, 1 0 0, 0 1 0, 0 0 0))"); }, "vertex has 3 coordinates"));
+  EXPECT_TRUE(rejects([] { read_wkt("POLYGON ((0 0 0 0 0, 1 0 0 0 0, 0 1 0 0 0, 0 0 0 0 0))"); },
+                      "vertex has more than 4 coordinates"));
+  EXPECT_TRUE(rejects([] { read_wkt("POLYGON Z ((0 0 nan, 1 0 0, 0 1 0, 0 0 0))"); },
+                      "third coordinate 'nan' is not a finite number"));
+  EXPECT_TRUE(rejects([] { read_wkt("GEOMETRYCOLLECTION (POLYGON Z EMPTY, POLYGON M EMPTY, POLYGON ZM EMPTY)"); },
+                      "POLYGON ZM has 4 coordinates per vertex, but the vertices before have 3"));
+  EXPECT_TRUE(rejects([] { read_wkt("POLYGON Z Z ((0 0 0, 1 0 0, 0 1 0, 0 0 0))"); }, "'(' or EMPTY"));
 }
 
 TEST(ioWktReader, RejectsEmptyShellIgnoresEmptyHole) {

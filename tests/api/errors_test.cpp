@@ -1,0 +1,46 @@
+// mk::compute's errors for input outside the domain: crossing edges come as CrossingEdges,
+// carrying both edges, with a message that gives their end points (issue 10, item 5).
+// [MK89 §3.3] (crossing edges cannot be repaired)
+// Preconditions: none.
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "api/mkbool.hpp"
+
+namespace mk {
+namespace {
+
+TEST(apiErrors, CrossingEdgesNameBothEdgesWithTheirEndPoints) {
+  const Polygon square{{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}}, PolygonType::island};
+  const Polygon bow_tie{{{{0, 0}, {1, 0}, {0, 1}, {1, 1}}}, PolygonType::island};
+  for (const auto kernel : kernel_names()) {
+    SCOPED_TRACE(std::string(kernel));
+    try {
+      compute(square, bow_tie, BooleanOptions{Operation::union_, true, std::string(kernel)});
+      ADD_FAILURE() << "accepted";
+    } catch (const CrossingEdges& e) {
+      EXPECT_EQ(e.polygon(), 1);
+      EXPECT_EQ(e.first().ring, 0);
+      EXPECT_EQ(e.second().ring, 0);
+      // The two edges are 3 -> 0 and 1 -> 2, in either order.
+      const bool order = e.first().from == 3;
+      EXPECT_EQ(order ? e.first().to : e.second().to, 0);
+      EXPECT_EQ(order ? e.second().from : e.first().from, 1);
+      EXPECT_EQ(std::string(e.what()),
+                "polygon B: ring 0's edge from vertex 3 (1 1) to vertex 0 (0 0) crosses ring 0's edge from vertex 1 "
+                "(1 0) to vertex 2 (0 1); the edges of a polygon may touch but must not cross");
+    }
+  }
+}
+
+TEST(apiErrors, NonFiniteCoordinatesAreInvalidInput) {
+  const Polygon bad{{{{0, 0}, {1, 0}, {0, std::numeric_limits<double>::infinity()}}}, PolygonType::island};
+  EXPECT_THROW(compute(bad, Polygon{}, BooleanOptions{}), InvalidInput);
+  EXPECT_THROW(compute(Polygon{}, Polygon{}, BooleanOptions{.kernel = "magic"}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mk
