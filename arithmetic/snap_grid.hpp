@@ -25,6 +25,7 @@
 #include <unordered_map>
 
 #include "arithmetic/adaptive.hpp"
+#include "arithmetic/exact_text.hpp"
 #include "arithmetic/interval_filter.hpp"
 #include "arithmetic/kernels/rational_kernel.hpp"
 #include "arithmetic/nearest_double.hpp"
@@ -197,57 +198,10 @@ class SnapGrid {
       throw std::invalid_argument("grid '" + std::string(text) +
                                   "' is not a positive decimal number (like 0.001, 1e-3 or 25) or a fraction p/q");
     };
-    const auto digits = [](std::string_view d) {
-      if (d.empty()) return false;
-      for (const char c : d) {
-        if (c < '0' || c > '9') return false;
-      }
-      return true;
-    };
-    mpq_class v;
-    const std::size_t slash = text.find('/');
-    if (slash != std::string_view::npos) {
-      const std::string_view p = text.substr(0, slash), q = text.substr(slash + 1);
-      if (!digits(p) || !digits(q) || p.size() > 4000 || q.size() > 4000) return fail();
-      v = mpq_class(mpz_class(std::string(p)), mpz_class(std::string(q)));
-      if (mpz_sgn(v.get_den_mpz_t()) == 0) return fail();
-      v.canonicalize();
-    } else {
-      std::string_view mantissa = text, exponent;
-      const std::size_t e = text.find_first_of("eE");
-      if (e != std::string_view::npos) {
-        mantissa = text.substr(0, e);
-        exponent = text.substr(e + 1);
-      }
-      if (!exponent.empty() && exponent[0] == '+') exponent.remove_prefix(1);
-      bool negative_exponent = false;
-      if (!exponent.empty() && exponent[0] == '-') {
-        negative_exponent = true;
-        exponent.remove_prefix(1);
-      }
-      if (e != std::string_view::npos && (!digits(exponent) || exponent.size() > 4)) return fail();
-      const std::size_t dot = mantissa.find('.');
-      std::string_view whole = mantissa, fraction;
-      if (dot != std::string_view::npos) {
-        whole = mantissa.substr(0, dot);
-        fraction = mantissa.substr(dot + 1);
-      }
-      if ((!whole.empty() && !digits(whole)) || (!fraction.empty() && !digits(fraction)) ||
-          (whole.empty() && fraction.empty()) || mantissa.size() > 4000) {
-        return fail();
-      }
-      long power = exponent.empty() ? 0 : std::stol(std::string(exponent));
-      if (negative_exponent) power = -power;
-      power -= static_cast<long>(fraction.size());
-      v = mpq_class(mpz_class(std::string(whole) + std::string(fraction)));
-      mpz_class ten_power;
-      mpz_ui_pow_ui(ten_power.get_mpz_t(), 10, static_cast<unsigned long>(power < 0 ? -power : power));
-      if (power < 0) {
-        v /= ten_power;
-      } else {
-        v *= ten_power;
-      }
-    }
+    // Decimal digits only (GMP's own parser reads a leading 0 as octal).
+    const std::optional<mpq_class> parsed = parse_exact_number(text, 4000, 4000);
+    if (!parsed) return fail();
+    const mpq_class& v = *parsed;
     if (sgn(v) <= 0) return fail();
     SnapGrid g;
     g.spacing_ = v;

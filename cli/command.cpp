@@ -68,10 +68,17 @@ void run_command(const CommandOptions& o) {
   options.area = o.stats;  // the area is only reported in --stats
   options.area_exact = o.stats;
   options.exact_coordinates = o.format == OutputFormat::native_json;  // only the native format writes them
+  options.rounding = o.rounding;
+  options.grid = o.grid;
   PredicateCounters::reset();
   BooleanOutput result;
   try {
-    result = compute(a, b, options);
+    if (in_a.exact || in_b.exact) {
+      // Exact coordinates (a result fed back in): computed over rationals.
+      result = compute(in_a.exact ? *in_a.exact : exact_polygon(a), in_b.exact ? *in_b.exact : exact_polygon(b), options);
+    } else {
+      result = compute(a, b, options);
+    }
   } catch (const CrossingEdges& e) {
     // Native JSON input is not checked while read (it means what the paper says), so its
     // crossing edges are found here; named as the reader names them.
@@ -91,6 +98,12 @@ void run_command(const CommandOptions& o) {
   OutputFile out(o.output);
   out.write(text);
   out.commit();
+  const RoundingReport& rounding = result.output.rounding;
+  if (!rounding.valid && !result.output.unbounded && o.format != OutputFormat::native_json) {
+    throw InvalidOutput(std::string("the written polygons are not valid (OGC) once rounded to doubles") +
+                        (rounding.mode == RoundingMode::nearest ? "; without --rounding nearest they are snap-rounded"
+                                                                : " (kernel " + result.stats.kernel + " is not exact)"));
+  }
 }
 
 }  // namespace mk::cli

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/output.hpp"
 #include "core/polygon.hpp"
 
 namespace mk::cli {
@@ -24,6 +25,8 @@ struct CommandOptions {
   OutputFormat format = OutputFormat::wkt;
   std::string output;  // empty: standard output
   bool stats = false;
+  RoundingMode rounding = RoundingMode::certified;  // see mk::BooleanOptions
+  std::string grid;
 };
 
 // Runs the operation and writes its output. Throws mk::cli::UsageError (two standard
