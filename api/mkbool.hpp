@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "core/exact_polygon.hpp"
+#include "api/exact_polygon.hpp"
 #include "core/output.hpp"
 #include "core/polygon.hpp"
 

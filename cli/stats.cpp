@@ -75,7 +75,6 @@ std::string stats_json(const BooleanOutput& result, const PredicateCounters& cou
   rounding["hot_pixels"] = r.hot_pixels;
   rounding["incidences"] = r.incidences;
   rounding["valid"] = r.valid;
-  rounding["ns"] = s.rounding_ns;
   j["rounding"] = rounding;
   if constexpr (PredicateCounters::enabled) j["predicates"] = counters_json(counters);
   return j.dump();

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/exact_polygon.hpp"
+#include "api/exact_polygon.hpp"
 #include "core/polygon.hpp"
 
 namespace mk {

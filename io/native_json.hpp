@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/exact_polygon.hpp"
+#include "api/exact_polygon.hpp"
 #include "core/output.hpp"
 #include "core/polygon.hpp"
 
