@@ -149,6 +149,11 @@ void certify_rounding(const BooleanResult<K>& r, Output& out, RoundingMode mode,
   report = {};
   report.mode = mode;
   report.valid = out.rounded_valid.value_or(false);
+  if constexpr (!K::is_exact) {
+    // A rounded kernel's polygons were assembled from inexact decisions: what is written is
+    // checked as written (one exact sweep).
+    if (report.valid && !r.unbounded) report.valid = check_ogc_validity<ExactKernel>(out.polygons).valid();
+  }
   if (mode == RoundingMode::nearest || r.unbounded) return;
   if (!grid && report.valid) return;
   if constexpr (!K::is_exact) {
