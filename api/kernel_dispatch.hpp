@@ -4,7 +4,9 @@
 // Preconditions: `name` is one of kernel_names() (else std::invalid_argument).
 #pragma once
 
+#include <chrono>
 #include <cmath>
+#include <optional>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -12,6 +14,7 @@
 #include <type_traits>
 
 #include "api/area.hpp"
+#include "api/certified_rounding.hpp"
 #include "api/mkbool.hpp"
 #include "arithmetic/kernels/double_kernel.hpp"
 #include "arithmetic/kernels/exact_kernel.hpp"
@@ -48,11 +51,18 @@ decltype(auto) with_kernel(std::string_view name, F&& f) {
   throw std::invalid_argument("unknown kernel '" + std::string(name) + "' (built: " + known + ")");
 }
 
-// The output of a finished operation that took op_ns nanoseconds.
+// The output of a finished operation that took op_ns nanoseconds, rounded as o.rounding and
+// o.grid ask (certified by default: api/certified_rounding.hpp).
 template <Kernel K>
 BooleanOutput boolean_output(const BooleanResult<K>& r, const BooleanOptions& o, std::int64_t op_ns) {
+  std::optional<SnapGrid> grid;
+  if (!o.grid.empty()) grid = SnapGrid::parse(o.grid);
   BooleanOutput out;
   out.output = to_output<K, ExactKernel>(r, o.exact_coordinates);
+  const auto t2 = std::chrono::steady_clock::now();
+  certify_rounding(r, out.output, o.rounding, grid);
+  out.stats.rounding_ns =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t2).count();
   out.stats.kernel = std::string(K::name);
   out.stats.op_ns = op_ns;
   out.stats.vertices_in = r.stats.vertices_in;

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "api/kernel_dispatch.hpp"
+#include "api/certified_rounding.hpp"
+#include "arithmetic/exact_text.hpp"
 
 namespace mk {
 
@@ -42,20 +44,34 @@ std::string crossing_message(const CrossingEdges& e, const Polygon& p) {
          edge(e.second()) + "; the edges of a polygon may touch but must not cross";
 }
 
-template <Kernel K>
-BooleanOutput run(const Polygon& a, const Polygon& b, const BooleanOptions& o) {
+// P is Point (doubles) or the kernel's own point type (exact rationals).
+template <Kernel K, class P>
+BooleanOutput run(const BasicPolygon<P>& a, const BasicPolygon<P>& b, const BooleanOptions& o) {
   const Options opt{o.op, o.regular, o.sorted_ef ? EfOrganisation::sorted : EfOrganisation::hash,
                     o.all_pairs ? PairSearch::all_pairs : PairSearch::sweep, o.threads};
-  validate_coordinates(a, "A");
-  validate_coordinates(b, "B");
-  auto ka = to_kernel_polygon<K>(a);
-  auto kb = to_kernel_polygon<K>(b);
+  if (!o.grid.empty()) (void)SnapGrid::parse(o.grid);  // std::invalid_argument before any work
+  if constexpr (std::is_same_v<P, Point>) {
+    validate_coordinates(a, "A");
+    validate_coordinates(b, "B");
+  } else {
+    validate_exact_coordinates(a, "A");
+    validate_exact_coordinates(b, "B");
+  }
   const auto t0 = std::chrono::steady_clock::now();
   BooleanResult<K> r;
   try {
-    r = boolean_op<K>(ka, kb, opt);
+    if constexpr (std::is_same_v<P, Point>) {
+      r = boolean_op<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b), opt);
+    } else {
+      r = boolean_op<K>(a, b, opt);
+    }
   } catch (const CrossingEdges& e) {
-    throw CrossingEdges(e.polygon(), e.first(), e.second(), crossing_message(e, e.polygon() == 0 ? a : b));
+    const auto& p = e.polygon() == 0 ? a : b;
+    if constexpr (std::is_same_v<P, Point>) {
+      throw CrossingEdges(e.polygon(), e.first(), e.second(), crossing_message(e, p));
+    } else {
+      throw CrossingEdges(e.polygon(), e.first(), e.second(), crossing_message(e, nearest_polygon(p)));
+    }
   }
   const auto t1 = std::chrono::steady_clock::now();
   return api_detail::boolean_output(r, o, std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count());
@@ -86,6 +102,46 @@ bool is_number_type_variant(std::string_view name) {
 BooleanOutput compute(const Polygon& a, const Polygon& b, const BooleanOptions& options) {
   if (options.fill_rule) return api_detail::compute_with_fill_rule(a, b, options);
   return api_detail::with_kernel(options.kernel, [&]<class K>(std::type_identity<K>) { return run<K>(a, b, options); });
+}
+
+BooleanOutput compute(const ExactPolygon& a, const ExactPolygon& b, const BooleanOptions& options) {
+  const auto da = as_double_polygon(a);
+  const auto db = da ? as_double_polygon(b) : std::nullopt;
+  if (da && db) return compute(*da, *db, options);
+  const std::string_view name = options.kernel.empty() ? default_kernel() : std::string_view(options.kernel);
+  if (name == ExactKernel::name || name == RationalKernel::name) return run<RationalKernel>(a, b, options);
+  if (std::find(kernel_names().begin(), kernel_names().end(), name) == kernel_names().end()) {
+    return compute(Polygon{}, Polygon{}, options);  // the unknown-kernel message
+  }
+  throw std::invalid_argument("kernel '" + std::string(name) + "' takes doubles only; coordinates that are not doubles need " +
+                              std::string(ExactKernel::name) + " or " + std::string(RationalKernel::name));
+}
+
+std::vector<RationalPoint> exact_vertices(const OutputIrreducible& cycle) {
+  if (cycle.exact.size() != 2 * cycle.vertices.size()) {
+    throw std::invalid_argument("the output has no exact coordinates (ask for BooleanOptions::exact_coordinates, exact kernels)");
+  }
+  std::vector<RationalPoint> out;
+  out.reserve(cycle.vertices.size());
+  for (std::size_t i = 0; i < cycle.vertices.size(); ++i) {
+    const auto x = parse_exact_number(cycle.exact[2 * i]);
+    const auto y = parse_exact_number(cycle.exact[2 * i + 1]);
+    if (!x || !y) throw std::invalid_argument("the output's exact coordinate '" + cycle.exact[2 * i] + "' is not a rational");
+    out.push_back({*x, *y});
+  }
+  return out;
+}
+
+ExactPolygon exact_result(const Output& output) {
+  if (!output.dangling_edges.empty() || !output.isolated_points.empty()) {
+    throw std::invalid_argument("a result with dangling edges or isolated points (non-regular) has no exact polygon form here");
+  }
+  ExactPolygon p;
+  p.type = output.unbounded ? PolygonType::hole : PolygonType::island;
+  for (const auto& c : output.irreducible) {
+    if (c.vertices.size() >= 3) p.rings.push_back(exact_vertices(c));
+  }
+  return p;
 }
 
 }  // namespace mk

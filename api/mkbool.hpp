@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/fill_rule.hpp"
+#include "api/exact_polygon.hpp"
 #include "core/output.hpp"
 #include "core/polygon.hpp"
 
@@ -47,6 +48,14 @@ struct BooleanOptions {
   // the two polygons' preparation); 0: every core. Results are the same, bit for bit, on
   // any number of threads.
   unsigned threads = 0;
+  // How Output::polygons, dangling_edges and isolated_points are rounded to doubles
+  // (Output::rounding says what was done). certified (default): the nearest doubles when
+  // they form a valid output, else a snap rounding onto the power-of-two grid at the scale
+  // of the largest coordinate; nearest: the nearest doubles, valid or not.
+  RoundingMode rounding = RoundingMode::certified;
+  // Snap rounding onto multiples of this spacing, always (certified mode): a positive
+  // decimal ("0.001", "1e-3") or fraction ("1/3"), taken exactly. Empty: none.
+  std::string grid = {};
 };
 
 struct BooleanStats {
@@ -63,6 +72,7 @@ struct BooleanStats {
   std::optional<double> area;
   std::optional<std::string> area_exact;
   bool area_beyond_double = false;
+  std::int64_t rounding_ns = 0;  // certified rounding after the operation (0 when not checked)
 };
 
 struct BooleanOutput {
@@ -93,5 +103,20 @@ Polygon fill_rule_polygon(const MultiPolygon& mp, FillRule rule);
 BooleanOutput union_all(const MultiPolygon& parts, const BooleanOptions& options);
 BooleanOutput intersection_all(const MultiPolygon& parts, const BooleanOptions& options);
 BooleanOutput make_valid(const MultiPolygon& input, const BooleanOptions& options);
+// The same over exact rational coordinates (for example an exact result fed back in, see
+// exact_vertices). Polygons whose coordinates are all doubles go to the kernel asked for;
+// others need an exact kernel over GMP rationals: the default, "exact" and "rational" all
+// run the rational kernel (stats.kernel says so); other kernels throw std::invalid_argument.
+BooleanOutput compute(const ExactPolygon& a, const ExactPolygon& b, const BooleanOptions& options);
+
+// The exact vertices of a result cycle (asked for with BooleanOptions::exact_coordinates).
+// Throws std::invalid_argument when the cycle has no exact coordinates.
+std::vector<RationalPoint> exact_vertices(const OutputIrreducible& cycle);
+
+// The exact result as a polygon of the paper's model, ready to be an operand: every cycle
+// with at least 3 vertices as a ring (they nest by parity), type hole when unbounded.
+// Throws std::invalid_argument when the output has no exact coordinates, or has dangling
+// edges or isolated points (non-regular results), whose exact form is not kept.
+ExactPolygon exact_result(const Output& output);
 
 }  // namespace mk

@@ -10,6 +10,9 @@
 //   op_s          the operation (boolean_op, the exact kernel)
 //   output_s      rounding, validity check, assembly (to_output without exact strings)
 //   wkt_s         write_wkt of the assembled result
+//   certify_s     certified rounding after to_output (issue 12): nothing more than a check
+//                 of the report when the nearest doubles are valid, snap rounding otherwise
+//   certify_ratio certify_s / op_s: the bar is 0.10
 //   area_s        the area rounded to the nearest double (filtered sum)
 //   area_exact_s  the exact area and its decimal text ("p/q")
 //   write_ratio   (output_s + wkt_s) / op_s: the bar is 0.25
@@ -20,9 +23,11 @@
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "api/area.hpp"
+#include "api/certified_rounding.hpp"
 #include "arithmetic/kernels/exact_kernel.hpp"
 #include "bench/workloads.hpp"
 #include "core/boolean_op.hpp"
@@ -40,7 +45,8 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
   const Workload w = make_workload(kind, static_cast<std::size_t>(state.range(0)));
   Options opt;
   opt.op = Operation::intersection;
-  double op = 0, output = 0, wkt = 0, area = 0, area_exact = 0;
+  double op = 0, output = 0, certify = 0, wkt = 0, area = 0, area_exact = 0;
+  bool snapped = false;
   std::size_t digits = 0;
   for (auto _ : state) {
     const double waited_before = op + output + wkt;
@@ -48,8 +54,12 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
     const BooleanResult<ExactKernel> r = boolean_op<ExactKernel>(w.a, w.b, opt);
     op += seconds_since(t);
     t = Clock::now();
-    const Output out = to_output<ExactKernel, ExactKernel>(r, false);
+    Output out = to_output<ExactKernel, ExactKernel>(r, false);
     output += seconds_since(t);
+    t = Clock::now();
+    certify_rounding(r, out, RoundingMode::certified, std::nullopt);
+    certify += seconds_since(t);
+    snapped = snapped || out.rounding.snapped;
     t = Clock::now();
     const std::string text = write_wkt(out);
     wkt += seconds_since(t);
@@ -68,6 +78,9 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
   state.counters["op_s"] = op / n;
   state.counters["output_s"] = output / n;
   state.counters["wkt_s"] = wkt / n;
+  state.counters["certify_s"] = certify / n;
+  state.counters["certify_ratio"] = certify / op;
+  state.counters["snapped"] = snapped ? 1 : 0;
   state.counters["area_s"] = area / n;
   state.counters["area_exact_s"] = area_exact / n;
   state.counters["write_ratio"] = (output + wkt) / op;

@@ -148,6 +148,22 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
     if (!it->is_boolean()) throw CaseError{"\"area_exact\" is not true or false"};
     o.area_exact = o.area_exact && it->get<bool>();
   }
+  o.rounding = options.rounding;
+  o.grid = options.grid;
+  if (const auto it = line.find("rounding"); it != line.end()) {
+    if (*it == "certified") {
+      o.rounding = RoundingMode::certified;
+    } else if (*it == "nearest") {
+      o.rounding = RoundingMode::nearest;
+    } else {
+      throw CaseError{"\"rounding\" is not \"certified\" or \"nearest\""};
+    }
+  }
+  if (const auto it = line.find("grid"); it != line.end()) {
+    if (!it->is_string()) throw CaseError{"\"grid\" is not a string (a decimal like \"0.001\" or a fraction \"p/q\")"};
+    o.grid = it->get<std::string>();
+  }
+  if (o.rounding == RoundingMode::nearest && !o.grid.empty()) throw CaseError{"\"grid\" snaps, which rounding nearest does not"};
   BooleanOutput r;
   try {
     r = compute(a, b, o);
@@ -158,6 +174,7 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
   }
   out["kernel"] = r.stats.kernel;
   out["valid"] = is_output_valid(r.output);
+  out["snapped"] = r.output.rounding.snapped;
   out["op_ns"] = r.stats.op_ns;
   // JSON has no infinity: an area beyond the largest double is null and flagged.
   out["area"] = r.stats.area && std::isfinite(*r.stats.area) ? Json(*r.stats.area) : Json(nullptr);
@@ -202,7 +219,8 @@ std::size_t run_batch(const BatchOptions& options) {
                    {"kernel", kernel},       {"result_wkt", nullptr},
                    {"area", nullptr},        {"area_beyond_double", nullptr},
                    {"area_exact", nullptr},  {"valid", nullptr},
-                   {"op_ns", nullptr},       {"line", line_number}};
+                   {"op_ns", nullptr},       {"snapped", nullptr},
+                   {"line", line_number}};
     try {
       run_case(raw, options, result);
     } catch (const CaseError& e) {
@@ -217,7 +235,7 @@ std::size_t run_batch(const BatchOptions& options) {
     }
     if (result.contains("error")) {
       // A failed case reports no partial result.
-      for (const char* key : {"result_wkt", "area", "area_beyond_double", "area_exact", "valid", "op_ns"}) result[key] = nullptr;
+      for (const char* key : {"result_wkt", "area", "area_beyond_double", "area_exact", "valid", "op_ns", "snapped"}) result[key] = nullptr;
     }
     out.write(result.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n");
   }

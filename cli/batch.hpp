@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "core/output.hpp"
+
 namespace mk::cli {
 
 struct BatchOptions {
@@ -15,6 +17,9 @@ struct BatchOptions {
   // on results with many crossing points it costs more than the operation.
   bool area_exact = true;
   std::string output;  // empty: standard output
+  // Rounding of each line's result_wkt (a line's own "rounding" and "grid" override them).
+  RoundingMode rounding = RoundingMode::certified;
+  std::string grid;
 };
 
 // Each non-blank input line is an object with "id" (any JSON value, echoed), "op"

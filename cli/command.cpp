@@ -65,6 +65,17 @@ void throw_if_stats_lost(int stats_lost) {
   if (stats_lost) throw OutputError(std::string("cannot write the statistics to standard error: ") + std::strerror(stats_lost));
 }
 
+// Exit 4 after the output is written when the written polygons are not valid once rounded
+// (--rounding nearest, or a kernel that is not exact).
+void throw_if_written_invalid(const BooleanOutput& result, OutputFormat format) {
+  const RoundingReport& rounding = result.output.rounding;
+  if (!rounding.valid && !result.output.unbounded && format != OutputFormat::native_json) {
+    throw InvalidOutput(std::string("the written polygons are not valid (OGC) once rounded to doubles") +
+                        (rounding.mode == RoundingMode::nearest ? "; without --rounding nearest they are snap-rounded"
+                                                                : " (kernel " + result.stats.kernel + " is not exact)"));
+  }
+}
+
 }  // namespace
 
 void run_command(const CommandOptions& o) {
@@ -95,10 +106,17 @@ void run_command(const CommandOptions& o) {
   options.area_exact = o.stats;
   options.exact_coordinates = o.format == OutputFormat::native_json;  // only the native format writes them
   options.fill_rule = o.fill_rule;
+  options.rounding = o.rounding;
+  options.grid = o.grid;
   PredicateCounters::reset();
   BooleanOutput result;
   try {
-    result = compute(a, b, options);
+    if (in_a.exact || in_b.exact) {
+      // Exact coordinates (a result fed back in): computed over rationals.
+      result = compute(in_a.exact ? *in_a.exact : exact_polygon(a), in_b.exact ? *in_b.exact : exact_polygon(b), options);
+    } else {
+      result = compute(a, b, options);
+    }
   } catch (const CrossingEdges& e) {
     // Native JSON input is not checked while read (it means what the paper says), so its
     // crossing edges are found here; named as the reader names them.
@@ -117,6 +135,7 @@ void run_command(const CommandOptions& o) {
   out.write(format_output(o.format, what, a, b, result));
   out.commit();
   throw_if_stats_lost(stats_lost);
+  throw_if_written_invalid(result, o.format);
 }
 
 void run_parts_command(const PartsCommandOptions& o) {
@@ -149,6 +168,7 @@ void run_parts_command(const PartsCommandOptions& o) {
   out.write(format_output(o.format, what, drawn, Polygon{}, result));
   out.commit();
   throw_if_stats_lost(stats_lost);
+  throw_if_written_invalid(result, o.format);
 }
 
 }  // namespace mk::cli

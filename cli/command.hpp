@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/fill_rule.hpp"
+#include "core/output.hpp"
 #include "core/polygon.hpp"
 
 namespace mk::cli {
@@ -28,6 +29,8 @@ struct CommandOptions {
   // Reads A and B by a fill rule (any rings: crossing, overlapping); regular output only.
   std::optional<FillRule> fill_rule;
   unsigned threads = 0;  // 0: every core
+  RoundingMode rounding = RoundingMode::certified;  // see mk::BooleanOptions
+  std::string grid;
 };
 
 // Runs the operation and writes its output. Throws mk::cli::UsageError (two standard

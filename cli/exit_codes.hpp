@@ -13,6 +13,14 @@ enum class ExitCode : int {
   failure = 1,        // anything else: unwritable output, unbounded result as WKT, kernel failure
   usage = 2,          // the command line itself is wrong
   invalid_input = 3,  // an input is malformed or outside the domain (mk::InvalidInput)
+  invalid_output = 4, // --rounding nearest (or an inexact kernel) wrote polygons that are not
+                      // valid once rounded; the output is written and a warning printed
+};
+
+// The output was written but is not a valid polygon (exit code 4, after the output).
+class InvalidOutput : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // A command line that parsed but asks for something impossible (two standard inputs).

@@ -138,6 +138,7 @@ Input read_input(const std::string& argument, std::string_view role) {
     PolygonInput read = read_polygon_input(text, hint);
     in.polygon = std::move(read.polygon);
     in.ring_names = std::move(read.ring_names);
+    in.exact = std::move(read.exact);
   } catch (const InvalidInput& e) {
     throw InvalidInput(in.name + ": " + e.what());
   }

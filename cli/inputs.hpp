@@ -3,10 +3,12 @@
 // Preconditions: at most one argument of a command is `-` (checked by the caller).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "api/exact_polygon.hpp"
 #include "core/polygon.hpp"
 
 namespace mk::cli {
@@ -23,6 +25,7 @@ struct Input {
   Polygon polygon;
   std::string name;                     // for messages: "A (file 'x.wkt')", "B (inline WKT)"
   std::vector<std::string> ring_names;  // per ring of `polygon`, as the reader names them
+  std::optional<ExactPolygon> exact;    // native JSON with coordinates that are not doubles
 };
 
 // Reads and parses one argument; `role` ("A" or "B") starts every error message, which

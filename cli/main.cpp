@@ -12,6 +12,7 @@
 #include <string>
 
 #include "api/mkbool.hpp"
+#include "arithmetic/snap_grid.hpp"
 #include "cli/batch.hpp"
 #include "cli/command.hpp"
 #include "cli/exit_codes.hpp"
@@ -23,6 +24,7 @@ constexpr const char* usage_lines =
     "usage: mkbool OP A B [--kernel K] [--non-regular] [--a-type island|hole] [--b-type island|hole]\n"
     "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats] [--threads N]\n"
     "                     [--fill-rule evenodd|nonzero|positive|negative|union]\n"
+    "                     [--rounding certified|nearest] [--grid G]\n"
     "       mkbool union-all|intersection-all|make-valid INPUT [--fill-rule R] [--kernel K]\n"
     "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats]\n"
     "       mkbool batch FILE.jsonl [--kernel K] [--non-regular] [-o FILE]\n"
@@ -34,7 +36,8 @@ constexpr const char* exit_code_help =
     "batch: reads JSON Lines {\"id\", \"op\", \"a_wkt\", \"b_wkt\"} and writes one JSON line per\n"
     "case (see 'mkbool batch --help').\n"
     "Exit codes: 0 success; 1 other failure (unwritable output, an unbounded result as\n"
-    "WKT/GeoJSON, kernel failure); 2 usage error; 3 invalid input.\n";
+    "WKT/GeoJSON, kernel failure); 2 usage error; 3 invalid input; 4 the output was written\n"
+    "but is not a valid polygon once rounded (only with --rounding nearest or an inexact kernel).\n";
 
 int fail(ExitCode code, const std::string& message) {
   std::fprintf(stderr, "mkbool: error: %s\n", message.c_str());
@@ -55,6 +58,34 @@ CLI::Validator kernel_validator() {
       },
       "KERNEL", "kernel");
 }
+
+// A grid spacing the library accepts (a positive decimal or fraction), checked while parsing.
+CLI::Validator grid_validator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          (void)SnapGrid::parse(text);
+        } catch (const std::invalid_argument& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "G", "grid");
+}
+
+const std::map<std::string, RoundingMode>& rounding_modes() {
+  static const std::map<std::string, RoundingMode> modes{{"certified", RoundingMode::certified},
+                                                         {"nearest", RoundingMode::nearest}};
+  return modes;
+}
+
+constexpr const char* rounding_help =
+    "how coordinates are rounded to doubles: certified (default: the nearest doubles when the result so "
+    "rounded is a valid polygon, checked exactly, else snap rounding onto the power-of-two grid at the scale of "
+    "the largest coordinate) or nearest (the nearest doubles, valid or not: exit code 4 when not)";
+constexpr const char* grid_help =
+    "snap-round the result onto multiples of G (a positive decimal like 0.001 or 1e-3, or a fraction p/q, taken "
+    "exactly), like shapely's grid_size";
 
 std::string kernel_help() {
   std::string names;
@@ -144,6 +175,11 @@ int run_batch_form(int argc, char** argv) {
                "leave out area_exact (the exact area as a rational), which on results with many crossing points "
                "costs more than the operation; a line's own \"area_exact\": false does the same for that line");
   app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
+  std::string rounding = "certified";
+  app.add_option("--rounding", rounding, std::string(rounding_help) + "; a line's own \"rounding\" does the same for that line")
+      ->check(CLI::IsMember(rounding_modes()));
+  app.add_option("--grid", o.grid, std::string(grid_help) + "; a line's own \"grid\" does the same for that line")
+      ->check(grid_validator());
   try {
     app.parse(argc - 1, argv + 1);  // argv[1] is "batch"
   } catch (const CLI::ParseError& e) {
@@ -151,6 +187,7 @@ int run_batch_form(int argc, char** argv) {
   }
   o.regular = !non_regular;
   o.area_exact = !no_area_exact;
+  o.rounding = rounding_modes().at(rounding);
   run_batch(o);
   return static_cast<int>(ExitCode::success);
 }
@@ -194,6 +231,9 @@ int run_command_form(int argc, char** argv) {
   app.add_option("--fill-rule", rule, fill_rule_help)->check(CLI::IsMember(fill_rules()))->excludes("--non-regular");
   app.add_option("--threads", o.threads, "threads for the operation (default 0: every core; the result is the same)")
       ->check(CLI::Range(0u, 1024u));
+  std::string rounding = "certified";
+  app.add_option("--rounding", rounding, rounding_help)->check(CLI::IsMember(rounding_modes()));
+  app.add_option("--grid", o.grid, grid_help)->check(grid_validator());
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -205,6 +245,10 @@ int run_command_form(int argc, char** argv) {
   if (!b_type.empty()) o.b_type = types.at(b_type);
   o.format = formats.at(format);
   if (!rule.empty()) o.fill_rule = fill_rules().at(rule);
+  o.rounding = rounding_modes().at(rounding);
+  if (o.rounding == RoundingMode::nearest && !o.grid.empty()) {
+    return fail(ExitCode::usage, "--grid snaps the result, which --rounding nearest does not (see mkbool --help)");
+  }
   run_command(o);
   return static_cast<int>(ExitCode::success);
 }
@@ -226,6 +270,9 @@ int run(int argc, char** argv) {
                                        ") never does");
   } catch (const OutputError& e) {
     return fail(ExitCode::failure, e.what());
+  } catch (const InvalidOutput& e) {
+    std::fprintf(stderr, "mkbool: warning: %s\n", e.what());
+    return static_cast<int>(ExitCode::invalid_output);
   } catch (const std::bad_alloc&) {
     return fail(ExitCode::failure, "out of memory");
   } catch (const std::exception& e) {

@@ -42,6 +42,7 @@ nlohmann::ordered_json counters_json(const PredicateCounters& c) {
 }  // namespace
 
 bool is_output_valid(const Output& output) {
+  if (output.rounding.snapped) return output.rounding.valid;  // checked exactly after snapping
   if (output.rounded_valid) return *output.rounded_valid;
   std::vector<std::vector<Point>> rings;
   rings.reserve(output.irreducible.size());
@@ -63,6 +64,18 @@ std::string stats_json(const BooleanOutput& result, const PredicateCounters& cou
   j["area"] = s.area && std::isfinite(*s.area) ? nlohmann::ordered_json(*s.area) : nullptr;
   j["area_beyond_double"] = s.area_beyond_double;
   j["area_exact"] = s.area_exact ? nlohmann::ordered_json(*s.area_exact) : nullptr;
+  const RoundingReport& r = result.output.rounding;
+  nlohmann::ordered_json rounding;
+  rounding["mode"] = r.mode == RoundingMode::certified ? "certified" : "nearest";
+  rounding["snapped"] = r.snapped;
+  rounding["grid"] = r.snapped ? nlohmann::ordered_json(r.grid) : nullptr;
+  rounding["user_grid"] = r.user_grid;
+  rounding["regridded"] = r.regridded;
+  rounding["max_displacement"] = r.max_displacement ? nlohmann::ordered_json(*r.max_displacement) : nullptr;
+  rounding["hot_pixels"] = r.hot_pixels;
+  rounding["incidences"] = r.incidences;
+  rounding["valid"] = r.valid;
+  j["rounding"] = rounding;
   if constexpr (PredicateCounters::enabled) j["predicates"] = counters_json(counters);
   return j.dump();
 }

@@ -21,6 +21,26 @@ struct OutputIrreducible {
   PolygonType type = PolygonType::island;
 };
 
+// How the written coordinates were obtained [BRIEF §6a]: `nearest` rounds every vertex to
+// its nearest doubles (and says whether that is valid); `certified` (the default) does that
+// when the result so rounded is valid and snap-rounds it onto a grid otherwise, or always
+// onto the grid the user gives.
+enum class RoundingMode : unsigned char { certified, nearest };
+
+struct RoundingReport {
+  RoundingMode mode = RoundingMode::certified;
+  bool snapped = false;      // the written coordinates are a snap rounding
+  std::string grid;          // its grid's spacing ("2^-52", or the exact "p/q" given); empty otherwise
+  bool user_grid = false;    // the grid was asked for
+  bool regridded = false;    // the user grid's points, rounded to doubles, were not valid: snapped again
+                             // on the grid of doubles at the scale of the largest coordinate
+  std::optional<double> max_displacement;  // largest vertex move, in units of the grid (snapped only)
+  std::size_t hot_pixels = 0;
+  std::size_t incidences = 0;  // edge-hot-pixel incidences besides the edges' ends
+  int rounds = 0;              // iterated snap rounding's extra rounds
+  bool valid = true;           // the written polygons are valid (OGC, checked exactly)
+};
+
 struct Output {
   std::vector<OutputIrreducible> irreducible;
   // The regular (area) part as OGC polygons with holes; empty when unbounded.
@@ -31,9 +51,13 @@ struct Output {
   // True when the result region is unbounded (its outermost cycles are hole-like): it
   // cannot be written as WKT or GeoJSON, only in the native format.
   bool unbounded = false;
-  // Exact kernels only: whether the rounded coordinates still form a valid output (no two
-  // edges cross, no ring collapses), checked exactly. Empty for inexact kernels.
+  // Whether the coordinates rounded to the nearest doubles form a valid output (OGC validity
+  // of `polygons` as rounded, and two-sided parts of two distinct points), checked exactly.
   std::optional<bool> rounded_valid;
+  // How `polygons`, `dangling_edges` and `isolated_points` were rounded. When snapped they
+  // are the snap rounding, while `irreducible` keeps the exact result's cycles (rounded to
+  // nearest, with their exact coordinates).
+  RoundingReport rounding;
 };
 
 }  // namespace mk

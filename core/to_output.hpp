@@ -1,9 +1,13 @@
 // Turns a kernel's result into the kernel-independent Output: irreducible polygons with
-// types, OGC polygons-with-holes through the inclusion forest, non-regular parts, and for
-// exact kernels whether the rounded coordinates are still a valid output.
+// types, OGC polygons-with-holes through the inclusion forest, non-regular parts, and
+// whether the coordinates rounded to the nearest doubles still form a valid output (OGC
+// validity, as GEOS's isValid defines it, decided exactly).
 // [MK89 §2.2] (inclusion forest) [MK89 §3.3] (detecting non-orientable rounded output)
+// [OGC06-103 §6.1.11]
 // Preconditions: `result` comes from boolean_op with kernel K; V is an exact kernel over
-// doubles (its Point constructible from mk::Point) used to check the rounded output.
+// doubles (its Point constructible from mk::Point) used to check the rounded output. For
+// exact kernels the exact result is valid (the certificate of rounding_motion.hpp relies on
+// it; tests/core/ogc_validity_test.cpp checks it on the degenerate generators).
 #pragma once
 
 #include <optional>
@@ -13,216 +17,108 @@
 
 #include "core/assemble.hpp"
 #include "core/boolean_op.hpp"
+#include "core/ogc_validity.hpp"
 #include "core/output.hpp"
-#include "core/pairs.hpp"
-#include "predicates/segments.hpp"
+#include "core/rounded_rings.hpp"
+#include "core/rounding_motion.hpp"
 
 namespace mk {
 
 namespace detail {
 
-// Whether rings given as indices into `pts` (distinct points of doubles, in lexicographic
-// order) form a valid output: no ring collapses (a repeated consecutive point), no two
-// edges cross or overlap, and no vertex lies inside another edge. Decided exactly by V.
-template <Kernel V>
-bool are_valid_indexed_rings(const std::vector<Point>& pts_in, const std::vector<std::vector<int>>& rings) {
-  std::vector<std::pair<int, int>> edges;
-  for (const auto& r : rings) {
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      if (r.size() > 1 && r[i] == r[(i + 1) % r.size()]) return false;
-      if (r.size() > 1 && !(r.size() == 2 && i == 1)) edges.push_back({r[i], r[(i + 1) % r.size()]});
-    }
-  }
-  std::vector<typename V::Point> pts;
-  pts.reserve(pts_in.size());
-  for (const Point& p : pts_in) pts.push_back(V::point(p));
-  std::vector<int> x_rank(pts.size(), 0);
-  for (std::size_t i = 1; i < pts.size(); ++i) {
-    x_rank[i] = x_rank[i - 1] + (V::compare_x(pts[i - 1], pts[i]) != Sign::zero);
-  }
-  std::vector<SweepItem> items;
-  items.reserve(edges.size());
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    const auto [s, e] = edges[k];
-    items.push_back(sweep_item(s, e, 0, k > 0 && edges[k - 1].second == s));
-  }
-  bool valid = true;
-  for_each_candidate_pair<V>(pts, x_rank, items, false, PairSearch::sweep, [&](int i, int j) {
-    if (!valid) return;
-    const SweepItem& a = items[i];
-    const SweepItem& b = items[j];
-    if (a.lo == b.lo && a.hi == b.hi) {
-      valid = false;  // the same segment twice
-      return;
-    }
-    const auto rel = relate_segments<V>(pts[a.lo], pts[a.hi], pts[b.lo], pts[b.hi]);
-    if (rel.proper_crossing || rel.touches()) valid = false;
-  });
-  return valid;
-}
-
-inline bool lexicographically_less(const Point& a, const Point& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; }
-
-}  // namespace detail
-
-// Whether rings of doubles form a valid output (detail::are_valid_indexed_rings), decided
-// exactly by kernel V.
-template <Kernel V>
-bool is_valid_rounded_output(const std::vector<std::vector<Point>>& rings) {
-  std::vector<Point> raw;
-  for (const auto& r : rings) raw.insert(raw.end(), r.begin(), r.end());
-  std::vector<std::size_t> order(raw.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return detail::lexicographically_less(raw[a], raw[b]); });
-  std::vector<Point> pts;
-  std::vector<int> id(raw.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    if (k == 0 || !(raw[order[k]] == raw[order[k - 1]])) pts.push_back(raw[order[k]]);
-    id[order[k]] = static_cast<int>(pts.size()) - 1;
-  }
-  std::vector<std::vector<int>> indexed;
-  std::size_t at = 0;
-  for (const auto& r : rings) {
-    indexed.emplace_back(id.begin() + static_cast<std::ptrdiff_t>(at), id.begin() + static_cast<std::ptrdiff_t>(at + r.size()));
-    at += r.size();
-  }
-  return detail::are_valid_indexed_rings<V>(pts, indexed);
-}
-
-namespace detail {
-
-// The check of are_valid_indexed_rings restricted to what rounding can change, for a
-// result with few crossing points: only crossings move when rounded (input points are
-// doubles), so an edge between two input points is the exact result's own, and the exact
-// result passes the check (its cycles are vertex-complete, edges meet at shared vertices
-// only). Every edge at a crossing is tested against every edge whose box meets its box, the
-// same pairs the sweep would test; empty when there are more than `max_moved` such edges.
-template <Kernel K, Kernel V>
-std::optional<bool> are_valid_where_rounded(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
-                                            std::size_t max_moved) {
-  struct RoundedEdge {
-    Point a, b;
-    bool moved;
-  };
+// The rounded points of a result's vertices, distinct and in lexicographic order, and each
+// vertex id's index among them (-1 for vertices on no cycle). Input points keep their
+// lexicographic ids (prepare numbers them so) and round to themselves when they are doubles:
+// only the crossings need sorting, and a merge puts every point in order.
+template <Kernel K>
+void rounded_points_in_order(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded, std::vector<Point>& pts,
+                             std::vector<int>& slot) {
   const int num_points = r.arrangement.num_points();
-  std::vector<RoundedEdge> edges;
-  std::vector<std::size_t> moved;
-  for (std::size_t c = 0; c < r.cycles.size(); ++c) {
-    const auto& ids = r.cycles[c].vertices;
-    const std::size_t n = ids.size();
-    if (n < 2) continue;
-    for (std::size_t i = 0; i < (n == 2 ? 1 : n); ++i) {
-      const std::size_t j = (i + 1) % n;
-      bool m = ids[i] >= num_points || ids[j] >= num_points;
-      if constexpr (!std::is_same_v<typename K::Point, Point>) {
-        // Input points that are not doubles (exact rational input) may move too.
-        const auto stays = [&](std::size_t k) {
-          return K::compare_vertices(K::vertex(K::point(rounded[c][k])), r.vertex(ids[k])) == Sign::zero;
-        };
-        m = m || !stays(i) || !stays(j);
-      }
-      if (m) {
-        if (moved.size() == max_moved) return std::nullopt;
-        moved.push_back(edges.size());
-      }
-      edges.push_back({rounded[c][i], rounded[c][j], m});
-    }
-  }
-  if (moved.empty()) return true;
-  struct Box {
-    double x0, y0, x1, y1;
-    bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
-  };
-  const auto box = [](const RoundedEdge& e) {
-    return Box{std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x), std::max(e.a.y, e.b.y)};
-  };
-  Box all = box(edges[moved[0]]);
-  std::vector<Box> moved_box;
-  for (const std::size_t m : moved) {
-    const RoundedEdge& e = edges[m];
-    if (e.a == e.b) return false;  // a collapsed edge
-    const Box b = box(e);
-    moved_box.push_back(b);
-    all = {std::min(all.x0, b.x0), std::min(all.y0, b.y0), std::max(all.x1, b.x1), std::max(all.y1, b.y1)};
-  }
-  for (std::size_t f = 0; f < edges.size(); ++f) {
-    const Box fb = box(edges[f]);
-    if (!fb.meets(all)) continue;
-    for (std::size_t k = 0; k < moved.size(); ++k) {
-      const std::size_t e = moved[k];
-      // Each pair once: a moved edge meets the moved edges after it only.
-      if (e == f || (edges[f].moved && f < e) || !fb.meets(moved_box[k])) continue;
-      const RoundedEdge& p = edges[e];
-      const RoundedEdge& q = edges[f];
-      if ((p.a == q.a && p.b == q.b) || (p.a == q.b && p.b == q.a)) return false;  // the same segment twice
-      const auto rel = relate_segments<V>(V::point(p.a), V::point(p.b), V::point(q.a), V::point(q.b));
-      if (rel.proper_crossing || rel.touches()) return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace detail
-
-// The same check on a result's cycles, given their vertices rounded: the input points keep
-// their lexicographic ids (prepare numbers them so), so only the crossings need sorting,
-// and a merge puts every rounded point in order. Linear in the input points used, plus
-// k log k for the k crossings.
-template <Kernel K, Kernel V>
-bool is_valid_rounded_result(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded) {
-  // Few crossings: test the edges at them only, in one pass over the edges.
-  if (const auto local = detail::are_valid_where_rounded<K, V>(r, rounded, 64)) return *local;
-  const int num_points = r.arrangement.num_points();
-  std::vector<int> slot(static_cast<std::size_t>(r.arrangement.num_vertices()), -1);
+  slot.assign(static_cast<std::size_t>(r.arrangement.num_vertices()), -1);
   std::vector<std::pair<int, Point>> collected, crossings;  // (id, rounded point)
   for (std::size_t c = 0; c < r.cycles.size(); ++c) {
     for (std::size_t k = 0; k < r.cycles[c].vertices.size(); ++k) {
       const int id = r.cycles[c].vertices[k];
-      if (slot[id] >= 0) continue;
+      if (slot[static_cast<std::size_t>(id)] >= 0) continue;
       if (id < num_points) {
-        slot[id] = static_cast<int>(collected.size());
+        slot[static_cast<std::size_t>(id)] = static_cast<int>(collected.size());
         collected.push_back({id, rounded[c][k]});
       } else {
-        slot[id] = 0;
+        slot[static_cast<std::size_t>(id)] = 0;
         crossings.push_back({id, rounded[c][k]});
       }
     }
   }
-  // The input points in id order, by one scan of the ids (no sort).
   std::vector<std::pair<int, Point>> inputs;
   inputs.reserve(collected.size());
   for (int id = 0; id < num_points; ++id) {
-    if (slot[id] >= 0) inputs.push_back(collected[static_cast<std::size_t>(slot[id])]);
+    if (slot[static_cast<std::size_t>(id)] >= 0) inputs.push_back(collected[static_cast<std::size_t>(slot[static_cast<std::size_t>(id)])]);
   }
   collected = {};
-  // Input points of doubles round to themselves; exact rational inputs may not, and then
-  // they are sorted like the crossings.
   for (std::size_t k = 1; k < inputs.size(); ++k) {
-    if (detail::lexicographically_less(inputs[k].second, inputs[k - 1].second)) {
+    if (lexicographically_less(inputs[k].second, inputs[k - 1].second)) {  // exact rational input moved
       crossings.insert(crossings.end(), inputs.begin(), inputs.end());
       inputs.clear();
       break;
     }
   }
   std::sort(crossings.begin(), crossings.end(),
-            [](const auto& a, const auto& b) { return detail::lexicographically_less(a.second, b.second); });
-  std::vector<Point> pts;
+            [](const auto& a, const auto& b) { return lexicographically_less(a.second, b.second); });
+  pts.clear();
   pts.reserve(inputs.size() + crossings.size());
   std::size_t i = 0, j = 0;
   while (i < inputs.size() || j < crossings.size()) {
-    const bool take_input = j == crossings.size() ||
-                            (i < inputs.size() && !detail::lexicographically_less(crossings[j].second, inputs[i].second));
+    const bool take_input =
+        j == crossings.size() || (i < inputs.size() && !lexicographically_less(crossings[j].second, inputs[i].second));
     const auto& [id, p] = take_input ? inputs[i++] : crossings[j++];
     if (pts.empty() || !(pts.back() == p)) pts.push_back(p);
-    slot[id] = static_cast<int>(pts.size()) - 1;
+    slot[static_cast<std::size_t>(id)] = static_cast<int>(pts.size()) - 1;
   }
-  std::vector<std::vector<int>> indexed(r.cycles.size());
+}
+
+}  // namespace detail
+
+// Whether the result's polygons (each a list of cycle indices: shell, then holes), with
+// their vertices rounded as given, are valid OGC polygons, and its two-sided parts keep two
+// distinct ends. For an exact kernel, first the certificate that rounding moved nothing
+// across anything (cheap when few vertices moved); otherwise one sweep over the rounded
+// output, O(n log n).
+template <Kernel K, Kernel V>
+bool is_valid_rounded_result_ogc(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
+                                 const std::vector<std::vector<int>>& polygon_cycles) {
   for (std::size_t c = 0; c < r.cycles.size(); ++c) {
-    indexed[c].reserve(r.cycles[c].vertices.size());
-    for (const int id : r.cycles[c].vertices) indexed[c].push_back(slot[id]);
+    if (r.cycles[c].vertices.size() == 2 && rounded[c][0] == rounded[c][1]) return false;
   }
-  return detail::are_valid_indexed_rings<V>(pts, indexed);
+  if constexpr (K::is_exact) {
+    if (rounding_keeps_topology(r, rounded, 256)) return true;
+  }
+  std::vector<Point> pts;
+  std::vector<int> slot;
+  detail::rounded_points_in_order(r, rounded, pts, slot);
+  std::vector<std::vector<int>> rings;
+  std::vector<int> part, index_in_part;
+  for (std::size_t k = 0; k < polygon_cycles.size(); ++k) {
+    for (std::size_t h = 0; h < polygon_cycles[k].size(); ++h) {
+      std::vector<int> ring;
+      for (const int id : r.cycles[static_cast<std::size_t>(polygon_cycles[k][h])].vertices) {
+        const int s = slot[static_cast<std::size_t>(id)];
+        if (ring.empty() || ring.back() != s) ring.push_back(s);
+      }
+      while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+      if (ring.size() < 3) return false;
+      rings.push_back(std::move(ring));
+      part.push_back(static_cast<int>(k));
+      index_in_part.push_back(static_cast<int>(h));
+    }
+  }
+  if constexpr (std::is_same_v<typename V::Point, Point>) {
+    return check_indexed_rings<V>(pts, rings, part, index_in_part).defect == OgcDefect::none;
+  } else {
+    std::vector<typename V::Point> vp;
+    vp.reserve(pts.size());
+    for (const Point& p : pts) vp.push_back(V::point(p));
+    return check_indexed_rings<V>(vp, rings, part, index_in_part).defect == OgcDefect::none;
+  }
 }
 
 // `exact_coordinates`: also write each vertex's exact coordinates as strings (exact kernels),
@@ -248,22 +144,28 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true) {
     rounded.push_back(o.vertices);
     out.irreducible.push_back(std::move(o));
   }
-  if constexpr (K::is_exact) out.rounded_valid = is_valid_rounded_result<K, V>(r, rounded);
+  std::vector<std::vector<int>> polygon_cycles;  // per polygon: its shell's cycle, then its holes'
   if (!r.unbounded) {
     const std::vector<int> parent = inclusion_parents(r.arrangement, r.cycles);
     std::vector<int> shell_of(r.cycles.size(), -1);
     for (std::size_t i = 0; i < r.cycles.size(); ++i) {
       if (r.cycles[i].vertices.size() < 3 || r.cycles[i].type != PolygonType::island) continue;
-      shell_of[i] = static_cast<int>(out.polygons.size());
-      out.polygons.push_back({out.irreducible[i].vertices, {}});
+      shell_of[i] = static_cast<int>(polygon_cycles.size());
+      polygon_cycles.push_back({static_cast<int>(i)});
     }
     for (std::size_t i = 0; i < r.cycles.size(); ++i) {
       if (r.cycles[i].vertices.size() < 3 || r.cycles[i].type != PolygonType::hole) continue;
-      if (parent[i] >= 0 && shell_of[parent[i]] >= 0) {
-        out.polygons[shell_of[parent[i]]].holes.push_back(out.irreducible[i].vertices);
+      if (parent[i] >= 0 && shell_of[static_cast<std::size_t>(parent[i])] >= 0) {
+        polygon_cycles[static_cast<std::size_t>(shell_of[static_cast<std::size_t>(parent[i])])].push_back(static_cast<int>(i));
       }
     }
+    for (const auto& cycles : polygon_cycles) {
+      OgcPolygon p{out.irreducible[static_cast<std::size_t>(cycles[0])].vertices, {}};
+      for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(out.irreducible[static_cast<std::size_t>(cycles[h])].vertices);
+      out.polygons.push_back(std::move(p));
+    }
   }
+  out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles);
   return out;
 }
 

@@ -17,6 +17,7 @@
 #include "api/mkbool.hpp"
 #include "experiments/peers/peers.hpp"
 #include "experiments/report_library.hpp"
+#include "experiments/report_rounding.hpp"
 #include "experiments/statistics.hpp"
 
 #ifndef MK_EXPERIMENTS_SOURCE_DIR
@@ -159,6 +160,7 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
   }
 
   md << library_report(rows);
+  md << rounding_report(rows);
 
   std::set<std::uint64_t> inconsistent_cases;
   std::size_t inconsistent_runs = 0;

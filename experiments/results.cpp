@@ -18,7 +18,8 @@ const std::vector<std::string_view>& csv_columns() {
       "size",         "op",              "regular",   "kernel",          "verdict",
       "area_error",   "symdiff_area",    "exact_area", "op_ns",          "predicate_calls",
       "predicate_fallbacks", "predicate_stages", "vertices_in", "crossings", "vertices_out", "message",
-      "rounding_bound", "oracle_agrees", "geos_valid", "exact_valid"};
+      "rounding_bound", "oracle_agrees", "geos_valid", "exact_valid",
+      "nearest_valid", "certified_snapped", "certified_valid", "snap_displacement"};
   return cols;
 }
 
@@ -115,7 +116,9 @@ std::string to_csv(const ResultRow& r) {
          opt(r.symdiff_area) + ',' + opt(r.exact_area) + ',' + opt(r.op_ns) + ',' + opt(r.predicate_calls) + ',' +
          opt(r.predicate_fallbacks) + ',' + r.predicate_stages + ',' + opt(r.vertices_in) + ',' + opt(r.crossings) +
          ',' + opt(r.vertices_out) + ',' + csv_quoted(r.message) + ',' + opt(r.rounding_bound) + ',' +
-         flag(r.oracle_agrees) + ',' + flag(r.geos_valid) + ',' + flag(r.exact_valid);
+         flag(r.oracle_agrees) + ',' + flag(r.geos_valid) + ',' + flag(r.exact_valid) + ',' +
+         flag(r.nearest_valid) + ',' + flag(r.certified_snapped) + ',' + flag(r.certified_valid) + ',' +
+         opt(r.snap_displacement);
   return out;
 }
 
@@ -153,6 +156,10 @@ ResultRow parse_csv_row(std::string_view line) {
   r.oracle_agrees = parse_flag(f[22]);
   r.geos_valid = parse_flag(f[23]);
   r.exact_valid = parse_flag(f[24]);
+  r.nearest_valid = parse_flag(f[25]);
+  r.certified_snapped = parse_flag(f[26]);
+  r.certified_valid = parse_flag(f[27]);
+  r.snap_displacement = parse_opt<double>(f[28]);
   return r;
 }
 

@@ -48,6 +48,13 @@ struct ResultRow {
   // Peers: GEOS's isValid and the exact OGC check of the result (ogc.hpp).
   std::optional<bool> geos_valid;
   std::optional<bool> exact_valid;
+  // mkbool's kernels (issue 12): whether the result rounded to the nearest doubles is valid
+  // (exact OGC check), whether certified rounding (the default) snap-rounded it, whether
+  // the written output is valid, and the largest vertex move in grid units when snapped.
+  std::optional<bool> nearest_valid;
+  std::optional<bool> certified_snapped;
+  std::optional<bool> certified_valid;
+  std::optional<double> snap_displacement;
 };
 
 // The schema, in column order.

@@ -272,6 +272,12 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
         r.vertices_in = static_cast<std::int64_t>(out.stats.vertices_in);
         r.crossings = static_cast<std::int64_t>(out.stats.crossings);
         r.vertices_out = static_cast<std::int64_t>(out.stats.vertices_out);
+        if (!out.output.unbounded) {
+          r.nearest_valid = out.output.rounded_valid;
+          r.certified_snapped = out.output.rounding.snapped;
+          r.certified_valid = out.output.rounding.valid;
+          r.snap_displacement = out.output.rounding.max_displacement;
+        }
         // Kernels that decide alike often output the same result: assess it once.
         const std::string key = fingerprint(out.output);
         auto cached = assessed.find(key);

@@ -39,7 +39,7 @@ std::string_view skip_leading_space(std::string_view text) {
   return text;
 }
 
-// True when the top-level JSON object has a "rings" key. A small scanner (strings, escapes,
+// True when the top-level JSON object has a "rings" key (or "polygons": the result form). A small scanner (strings, escapes,
 // nesting depth) rather than a parse: it stops at the key and never builds a document.
 // Malformed JSON simply yields false; the GeoJSON reader then reports the syntax error.
 bool top_object_has_rings(std::string_view text) {
@@ -56,7 +56,8 @@ bool top_object_has_rings(std::string_view text) {
       }
       if (i >= text.size()) return false;
       if (depth == 1 && expecting_key) {
-        if (text.substr(start, i - start) == "rings") return true;
+        const std::string_view key = text.substr(start, i - start);
+        if (key == "rings" || key == "polygons") return true;  // polygons: the output form
         expecting_key = false;
       }
     } else if (c == '{' || c == '[') {
@@ -135,7 +136,16 @@ PolygonInput read_polygon_input(std::string_view text, std::string_view filename
   PartNames names;
   switch (in.format) {
     case Format::native_json:
-      in.polygon = read_native_json(text);
+      {
+        ExactPolygon exact = read_native_json_exact(text);
+        if (auto d = as_double_polygon(exact)) {
+          in.polygon = std::move(*d);
+        } else {
+          validate_exact_coordinates(exact, "");
+          in.polygon = nearest_polygon(exact);
+          in.exact = std::move(exact);
+        }
+      }
       for (std::size_t r = 0; r < in.polygon.rings.size(); ++r) in.ring_names.push_back("rings[" + std::to_string(r) + "]");
       return in;
     case Format::wkt:

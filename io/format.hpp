@@ -3,10 +3,12 @@
 // Preconditions: none; unreadable input throws mk::InvalidInput.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "api/exact_polygon.hpp"
 #include "core/polygon.hpp"
 
 namespace mk {
@@ -17,7 +19,7 @@ enum class Format { wkt, geojson, native_json };
 std::string_view format_name(Format format);
 
 // By the file name's extension when it has one of .wkt, .geojson or .json (any case); a
-// .json file whose top-level object has a "rings" member is native JSON, any other
+// .json file whose top-level object has a "rings" member (or "polygons": a result) is native JSON, any other
 // GeoJSON. Without a known extension, by the content: text starting with '{' is JSON as
 // above, anything else WKT. The content scan stops early and copies nothing.
 Format sniff_format(std::string_view text, std::string_view filename_hint);
@@ -29,6 +31,9 @@ struct PolygonInput {
   // Per ring of `polygon`: "polygon 1, ring 0" (WKT), "coordinates[1][0]" (GeoJSON),
   // "rings[3]" (native JSON).
   std::vector<std::string> ring_names;
+  // Native JSON with a coordinate that is not a double: the polygon exactly (`polygon` then
+  // holds its nearest doubles).
+  std::optional<ExactPolygon> exact;
 };
 
 // Reads a polygon in the sniffed format. WKT and GeoJSON give one island-type polygon whose

@@ -5,11 +5,14 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
+#include "arithmetic/exact_text.hpp"
 #include "core/error.hpp"
 #include "io/json_util.hpp"
 #include "io/ring_rules.hpp"
@@ -80,13 +83,37 @@ double read_coordinate(const Json& j, const std::string& path) {
   return d;
 }
 
-Ring read_ring(const Json& points, const std::string& path) {
+// A coordinate taken exactly: a JSON number is the double it denotes (as parsed), a string
+// the exact rational or decimal it writes.
+mpq_class read_exact_coordinate(const Json& j, const std::string& path) {
+  if (j.is_string()) {
+    const std::string& text = j.get_ref<const std::string&>();
+    if (const auto v = parse_exact_number(text)) return *v;
+    fail(path, "coordinate \"" + io_detail::excerpt(text) +
+                   "\" is not a number: expected a JSON number, an integer \"p\", a rational \"p/q\" or a "
+                   "decimal \"d.ddd\" (nonzero denominator)");
+  }
+  return mpq_class(read_coordinate(j, path));
+}
+
+template <class P>
+P read_point(const Json& point, const std::string& point_path) {
+  if constexpr (std::is_same_v<P, Point>) {
+    return Point{read_coordinate(point[0], index_path(point_path, 0)), read_coordinate(point[1], index_path(point_path, 1))};
+  } else {
+    return P{read_exact_coordinate(point[0], index_path(point_path, 0)),
+             read_exact_coordinate(point[1], index_path(point_path, 1))};
+  }
+}
+
+template <class P>
+BasicRing<P> read_ring(const Json& points, const std::string& path) {
   if (!points.is_array()) fail(path, "expected an array of points, found " + json_type_name(points));
   if (points.empty()) {
     fail(path, "ring is empty; a ring needs at least 1 point (1 is a one-sided polygon, 2 a "
                "two-sided one)");
   }
-  Ring ring;
+  BasicRing<P> ring;
   ring.reserve(points.size());
   for (std::size_t v = 0; v < points.size(); ++v) {
     const Json& point = points[v];
@@ -96,10 +123,14 @@ Ring read_ring(const Json& points, const std::string& path) {
       fail(point_path, "point has " + std::to_string(point.size()) +
                            " coordinates; expected exactly 2, [x, y]");
     }
-    ring.push_back(Point{read_coordinate(point[0], index_path(point_path, 0)),
-                         read_coordinate(point[1], index_path(point_path, 1))});
+    ring.push_back(read_point<P>(point, point_path));
   }
-  io_detail::remove_repeated_vertices(ring);
+  if constexpr (std::is_same_v<P, Point>) {
+    io_detail::remove_repeated_vertices(ring);
+  } else {
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+  }
   return ring;
 }
 
@@ -124,11 +155,46 @@ void append_points(std::string& out, const std::vector<Point>& points) {
 
 }  // namespace
 
-Polygon read_native_json(std::string_view text) {
+namespace {
+
+// The output form {"kernel", "unbounded", ..., "polygons": [{"type", "vertices", "exact"}]}
+// as an operand: its cycles of 3 or more vertices as rings (exact coordinates when given),
+// type hole when unbounded.
+template <class P>
+BasicPolygon<P> read_result_form(const Json& root) {
+  BasicPolygon<P> polygon;
+  if (const auto u = root.find("unbounded"); u != root.end()) {
+    if (!u->is_boolean()) fail("unbounded", "expected true or false, found " + json_type_name(*u));
+    polygon.type = u->template get<bool>() ? PolygonType::hole : PolygonType::island;
+  }
+  for (const char* key : {"dangling_edges", "isolated_points"}) {
+    if (const auto it = root.find(key); it != root.end() && it->is_array() && !it->empty()) {
+      fail(key, "a non-regular result (dangling edges or isolated points) is not read back as an operand");
+    }
+  }
+  const Json& polygons = root.at("polygons");
+  if (!polygons.is_array()) fail("polygons", "expected an array of polygons, found " + json_type_name(polygons));
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const std::string path = index_path("polygons", i);
+    const Json& c = polygons[i];
+    if (!c.is_object()) fail(path, "expected an object {\"type\", \"vertices\", \"exact\"}, found " + json_type_name(c));
+    const auto exact = c.find("exact");
+    const auto vertices = c.find("vertices");
+    if (vertices == c.end()) fail(path, "missing \"vertices\" member");
+    const bool use_exact = exact != c.end() && !std::is_same_v<P, Point>;
+    BasicRing<P> ring = read_ring<P>(use_exact ? *exact : *vertices, path + (use_exact ? ".exact" : ".vertices"));
+    if (ring.size() >= 3) polygon.rings.push_back(std::move(ring));
+  }
+  return polygon;
+}
+
+template <class P>
+BasicPolygon<P> read_polygon_form(std::string_view text) {
   const Json root = io_detail::parse_json(text, "native JSON");
   if (!root.is_object()) fail("", "expected an object {\"type\": ..., \"rings\": [...]}, found " +
                                       json_type_name(root));
-  Polygon polygon;
+  if (root.contains("polygons") && !root.contains("rings")) return read_result_form<P>(root);
+  BasicPolygon<P> polygon;
   bool has_rings = false;
   for (const auto& [key, value] : root.items()) {
     if (key == "type") {
@@ -138,7 +204,7 @@ Polygon read_native_json(std::string_view text) {
         polygon.type = PolygonType::hole;
       } else {
         fail("type", "expected \"island\" or \"hole\", found " +
-                         (value.is_string() ? "\"" + io_detail::excerpt(value.get<std::string>()) + "\""
+                         (value.is_string() ? "\"" + io_detail::excerpt(value.template get<std::string>()) + "\""
                                             : json_type_name(value)));
       }
     } else if (key == "rings") {
@@ -146,7 +212,7 @@ Polygon read_native_json(std::string_view text) {
       if (!value.is_array()) fail("rings", "expected an array of rings, found " + json_type_name(value));
       polygon.rings.reserve(value.size());
       for (std::size_t r = 0; r < value.size(); ++r) {
-        polygon.rings.push_back(read_ring(value[r], index_path("rings", r)));
+        polygon.rings.push_back(read_ring<P>(value[r], index_path("rings", r)));
       }
     } else {
       fail("", "unknown member \"" + io_detail::excerpt(key) + "\"; expected \"type\" and \"rings\"");
@@ -155,6 +221,12 @@ Polygon read_native_json(std::string_view text) {
   if (!has_rings) fail("", "missing \"rings\" member");
   return polygon;
 }
+
+}  // namespace
+
+Polygon read_native_json(std::string_view text) { return read_polygon_form<Point>(text); }
+
+ExactPolygon read_native_json_exact(std::string_view text) { return read_polygon_form<RationalPoint>(text); }
 
 std::string write_native_json(const Polygon& polygon) {
   std::string out = "{\"type\": \"";

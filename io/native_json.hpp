@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "api/exact_polygon.hpp"
 #include "core/output.hpp"
 #include "core/polygon.hpp"
 
@@ -19,7 +20,14 @@ namespace mk {
 // ring of 1 point (one-sided) or 2 points (two-sided) is allowed, an empty ring is not.
 // Throws mk::InvalidInput: "native JSON line L, column C: <reason>" for JSON syntax errors,
 // "native JSON at <path>: <what>" for content errors (path like "rings[0][3][1]").
+// The output form of write_native_json(Output) is read as well: its cycles of 3 or more
+// vertices are the rings (nesting by parity gives the result's region), type hole when
+// "unbounded"; a result with dangling edges or isolated points is refused.
 Polygon read_native_json(std::string_view text);
+
+// The same, with coordinates taken exactly: strings may hold any rational "p/q" or decimal
+// "d.ddd[e[+-]n]" (0.1 is 1/10), and the output form's "exact" coordinates are used.
+ExactPolygon read_native_json_exact(std::string_view text);
 
 // The input form above, one ring per line; reads back to the same polygon.
 std::string write_native_json(const Polygon& polygon);

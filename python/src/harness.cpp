@@ -51,6 +51,10 @@ py::dict row_dict(const ResultRow& r) {
   d["oracle_agrees"] = opt(r.oracle_agrees);
   d["geos_valid"] = opt(r.geos_valid);
   d["exact_valid"] = opt(r.exact_valid);
+  d["nearest_valid"] = opt(r.nearest_valid);
+  d["certified_snapped"] = opt(r.certified_snapped);
+  d["certified_valid"] = opt(r.certified_valid);
+  d["snap_displacement"] = opt(r.snap_displacement);
   return d;
 }
 

@@ -102,7 +102,7 @@ TEST(cliBatch, OutputLinesHaveTheDocumentedFieldsAndExactAreas) {
       std::vector<std::string> keys;
       for (const auto& item : line.items()) keys.push_back(item.key());
       EXPECT_EQ(keys, (std::vector<std::string>{"id", "op", "kernel", "result_wkt", "area", "area_beyond_double",
-                                                "area_exact", "valid", "op_ns", "line"}))
+                                                "area_exact", "valid", "op_ns", "snapped", "line"}))
           << line;
       EXPECT_EQ(line["kernel"], std::string(kernel));
       if (is_exact_kernel(kernel)) {

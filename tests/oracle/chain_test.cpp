@@ -1,0 +1,115 @@
+// Exact results fed back in: (A op1 B) op2 C computed by mkbool in two calls, the first
+// result passed on exactly (mk::exact_result: rational coordinates, not doubles), must be
+// the region CGAL Epeck gives for the chained operation; C is A translated by a third and
+// a seventh of its extent (rational coordinates, so the second call takes exact input too).
+// [BRIEF §6a] (exact in, exact out) [BRIEF §1]
+// Preconditions: none. MK_CHAIN_CASES overrides the number of chains (default 300); the
+// seed is printed.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+
+#include "api/mkbool.hpp"
+#include "tests/oracle/cgal_reference.hpp"
+#include "tests/oracle/checks.hpp"
+#include "tests/oracle/families.hpp"
+#include "tests/oracle/membership.hpp"
+
+namespace mk::oracle {
+namespace {
+
+// A translated by (width / 3, height / 7), exactly.
+ExactPolygon shifted(const Polygon& a) {
+  ExactPolygon c = exact_polygon(a);
+  bool first = true;
+  Q min_x, max_x, min_y, max_y;
+  for (const auto& ring : c.rings) {
+    for (const auto& p : ring) {
+      if (first || p.x < min_x) min_x = p.x;
+      if (first || p.x > max_x) max_x = p.x;
+      if (first || p.y < min_y) min_y = p.y;
+      if (first || p.y > max_y) max_y = p.y;
+      first = false;
+    }
+  }
+  const Q dx = (max_x - min_x) / 3, dy = (max_y - min_y) / 7;
+  for (auto& ring : c.rings) {
+    for (auto& p : ring) {
+      p.x += dx;
+      p.y += dy;
+      p.x.canonicalize();
+      p.y.canonicalize();
+    }
+  }
+  return c;
+}
+
+Region scaled(const Region& r, const Frame& f) { return f.to_cgal(r); }
+
+TEST(ExactChain, TwoCallsThroughExactResultsEqualCgalOnTheChain) {
+  const char* env = std::getenv("MK_CHAIN_CASES");
+  const int cases = env ? std::atoi(env) : 300;
+  const std::uint64_t seed = 12;
+  std::mt19937_64 rng(seed);
+  std::printf("exact chain: seed %llu, %d chains\n", static_cast<unsigned long long>(seed), cases);
+  const Operation ops[] = {Operation::intersection, Operation::union_, Operation::difference,
+                           Operation::symmetric_difference};
+  int exact_inputs = 0, compared = 0;
+  for (int i = 0; i < cases; ++i) {
+    const GeneratedPair pair = random_pair(static_cast<std::size_t>(i), rng);
+    const Operation op1 = ops[rng() % 4], op2 = ops[rng() % 4];
+    const ExactPolygon c = shifted(pair.a);
+    const std::string what = "chain " + std::to_string(i) + " (" + pair.family + ", " + pair.transform + "): (A " +
+                             std::string(operation_name(op1)) + " B) " + std::string(operation_name(op2)) + " C; A " +
+                             describe(pair.a) + " B " + describe(pair.b);
+    BooleanOptions o;
+    o.exact_coordinates = true;
+    o.area = false;
+    o.op = op1;
+    const BooleanOutput first = compute(pair.a, pair.b, o);
+    const ExactPolygon ab = exact_result(first.output);
+    o.op = op2;
+    const BooleanOutput second = compute(ab, c, o);
+    exact_inputs += second.stats.kernel == "rational";
+    const ExactPolygon abc = exact_result(second.output);
+
+    const Region ra = region_of(pair.a), rb = region_of(pair.b), rc = region_of(c);
+    const Frame frame = Frame::of(ra, rb);
+    const CgalSet expected = CgalSet::of(scaled(ra, frame))
+                                 .apply(op1, CgalSet::of(scaled(rb, frame)))
+                                 .apply(op2, CgalSet::of(scaled(rc, frame)));
+    const CgalSet got = CgalSet::of(scaled(region_of(abc), frame));
+    EXPECT_TRUE(got.same_as(expected)) << what;
+    ++compared;
+  }
+  std::printf("exact chain: %d compared with CGAL, %d second calls on rational (non-double) input\n", compared,
+              exact_inputs);
+  EXPECT_GT(exact_inputs, compared / 2);
+}
+
+// The command's native JSON output read back as input: exact coordinates, no loss.
+TEST(ExactChain, ExactResultKeepsTheRegion) {
+  const Polygon a{{{{0, 0}, {3, 0}, {0, 3}}}};
+  const Polygon b{{{{1, 1}, {1, -1}, {2, 2}}}};
+  BooleanOptions o;
+  o.op = Operation::intersection;
+  o.exact_coordinates = true;
+  const BooleanOutput r = compute(a, b, o);
+  const ExactPolygon e = exact_result(r.output);
+  const std::vector<RationalPoint> v = exact_vertices(r.output.irreducible.at(0));
+  bool has_non_double = false;
+  for (const auto& p : v) has_non_double = has_non_double || mpq_class(nearest_double(p.x)) != p.x;
+  EXPECT_TRUE(has_non_double);
+  // Intersecting the exact result with A again changes nothing.
+  const BooleanOutput again = compute(e, exact_polygon(a), o);
+  EXPECT_TRUE(CgalSet::of(region_of(exact_result(again.output))).same_as(CgalSet::of(region_of(e))));
+  BooleanOptions doubles_only;
+  doubles_only.kernel = "double";
+  EXPECT_THROW(compute(e, e, doubles_only), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mk::oracle
