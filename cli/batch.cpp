@@ -196,10 +196,12 @@ bool is_blank(std::string_view s) { return s.find_first_not_of(" \t\r\f\v") == s
 
 std::size_t run_batch(const BatchOptions& options) {
   std::string text;
+  // JSON Lines are text: a NUL byte means binary data (/dev/zero, /dev/urandom, a binary
+  // file), refused at once with its offset instead of read to its end or until memory runs out.
   if (options.input == "-") {
-    text = read_standard_input();
+    text = read_text_stream(stdin, "standard input");
   } else {
-    text = read_file(options.input);
+    text = read_text_file(options.input);
   }
   const std::string kernel(options.kernel.empty() ? default_kernel() : std::string_view(options.kernel));
 

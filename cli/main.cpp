@@ -95,8 +95,17 @@ std::string kernel_help() {
 
 // CLI11 reports help and version as exceptions with exit code 0, and parse errors with
 // its own codes; the command's contract is 2 for every usage error.
+// Help and version that cannot be written (standard output on a full disk) are exit 1.
 int parse_error(const CLI::App& app, const CLI::ParseError& e) {
-  if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+  if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
+    const int code = app.exit(e);
+    std::cout.flush();
+    if (!std::cout || std::fflush(stdout) != 0) {
+      std::fprintf(stderr, "mkbool: error: cannot write to standard output\n");
+      return static_cast<int>(ExitCode::failure);
+    }
+    return code;
+  }
   std::fprintf(stderr, "mkbool: error: %s (see mkbool --help)\n", e.what());
   return static_cast<int>(ExitCode::usage);
 }

@@ -50,6 +50,20 @@ TEST(cliBatch, BadLineInTheMiddleDoesNotStopTheBatch) {
   EXPECT_EQ(lines[2]["area"], 7.0);
 }
 
+// A batch file is JSON Lines text: binary data is refused at its first NUL byte with exit 3,
+// never read to its end (/dev/zero has none) or until memory runs out.
+TEST(cliBatch, BinaryInputIsRefusedAtItsFirstNulByte) {
+  for (const std::string device : {"/dev/zero", "/dev/urandom"}) {
+    const ProcessResult r = run_mkbool({"batch", device});
+    EXPECT_EQ(r.exit_code, 3) << device << " " << describe(r);
+    EXPECT_NE(r.err.find("NUL byte"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
+  }
+  const ProcessResult r = run_mkbool({"batch", "-"}, case_line(1, "union", square_a, square_b) + std::string(3, '\0'));
+  EXPECT_EQ(r.exit_code, 3) << describe(r);
+  EXPECT_NE(r.err.find("NUL byte"), std::string::npos) << r.err;
+}
+
 TEST(cliBatch, EveryFailingCaseGivesItsOwnErrorLine) {
   const std::string input = case_line(1, "nope", square_a, square_b) +                                //
                             case_line(2, "union", "POLYGON((0 0,1 0,0 1,1 1,0 0))", square_b) +          //

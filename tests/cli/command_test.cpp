@@ -294,6 +294,13 @@ TEST(cliCommand, FullOutputOrFullStandardErrorExitsOne) {
   const ProcessResult stats = run_process({"/bin/sh", "-c", command + " --stats 2> /dev/full"});
   EXPECT_EQ(stats.exit_code, 1) << describe(stats);
   EXPECT_EQ(canonical_wkt(stats.out), canonical_wkt("POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))")) << describe(stats);
+  // Help and version too: exit 1 when they cannot be written, 0 when they can.
+  for (const std::string flag : {"--help", "--version", "batch --help", "union-all --help"}) {
+    const ProcessResult full = run_process({"/bin/sh", "-c", "'" + mkbool_exe() + "' " + flag + " > /dev/full"});
+    EXPECT_EQ(full.exit_code, 1) << flag << " " << describe(full);
+    const ProcessResult ok = run_process({"/bin/sh", "-c", "'" + mkbool_exe() + "' " + flag + " > /dev/null"});
+    EXPECT_EQ(ok.exit_code, 0) << flag << " " << describe(ok);
+  }
 }
 
 TEST(cliCommand, DeviceTargetIsWrittenInPlace) {
