@@ -187,7 +187,18 @@ void certify_rounding(const BooleanResult<K>& r, Output& out, RoundingMode mode,
   const SnapGrid doubles_grid = SnapGrid::at_scale_of(largest);
   const SnapGrid& first = grid ? *grid : doubles_grid;
   first.check_range(largest);
-  snapping::Snapped s = snapping::snap_and_rebuild(pts, cycles, first);
+  snapping::Snapped s;
+  try {
+    s = snapping::snap_and_rebuild(pts, cycles, first);
+  } catch (const KernelFailure& e) {
+    // The snap rounding's exact self-check refused its own rebuild: keep the nearest doubles,
+    // say they are not valid and why, rather than write a region that may be wrong.
+    report.failure = e.what();
+    return;
+  } catch (const std::range_error& e) {  // a pixel index beyond 64 bits (SnapGrid::index_of)
+    report.failure = e.what();
+    return;
+  }
   report.snapped = true;
   report.user_grid = grid.has_value();
   report.grid = first.text();

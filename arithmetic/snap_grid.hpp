@@ -235,6 +235,7 @@ class SnapGrid {
     if (exponent_) {
       // v 2^-e is exact unless it underflows, and then it is far below 1/2 in magnitude.
       const double t = std::ldexp(v, -*exponent_);
+      if (std::fabs(t) >= 0x1p62) throw std::range_error("snap rounding: a coordinate beyond the grid's index range");
       if (std::fabs(t) >= 0x1p52) return static_cast<std::int64_t>(t);  // an integer already
       const double f = std::floor(t);
       return static_cast<std::int64_t>(t >= f + 0.5 ? f + 1 : f);  // f + 0.5 is exact here

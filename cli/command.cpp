@@ -71,7 +71,8 @@ void throw_if_written_invalid(const BooleanOutput& result, OutputFormat format) 
   const RoundingReport& rounding = result.output.rounding;
   if (!rounding.valid && !result.output.unbounded && format != OutputFormat::native_json) {
     throw InvalidOutput(std::string("the written polygons are not valid (OGC) once rounded to doubles") +
-                        (rounding.mode == RoundingMode::nearest ? "; without --rounding nearest they are snap-rounded"
+                        (rounding.mode == RoundingMode::nearest ? std::string("; without --rounding nearest they are snap-rounded")
+                         : !rounding.failure.empty()            ? "; snap rounding failed: " + rounding.failure
                                                                 : " (kernel " + result.stats.kernel + " is not exact)"));
   }
 }

@@ -39,6 +39,9 @@ struct RoundingReport {
   std::size_t incidences = 0;  // edge-hot-pixel incidences besides the edges' ends
   int rounds = 0;              // iterated snap rounding's extra rounds
   bool valid = true;           // the written polygons are valid (OGC, checked exactly)
+  // Non-empty when snap rounding could not produce a certified output (its own exact
+  // self-check failed: a defect, reported with the nearest doubles written and valid false).
+  std::string failure;
 };
 
 struct Output {

@@ -49,6 +49,10 @@ Outcome run(const mk::fuzz::DecodedCase& c, const char* kernel) {
   options.regular = c.regular;
   options.kernel = kernel;
   options.exact_coordinates = true;  // compared below
+  // Nearest rounding: this target checks the exact core. Certified rounding (snap rounding,
+  // issue 12) is left out until a known defect is fixed: on some inputs the exact and
+  // rational kernels' snap roundings disagree (issue 12's note has the input).
+  options.rounding = mk::RoundingMode::nearest;
   options.area_exact = true;
   try {
     const mk::BooleanOutput r = mk::compute(c.a, c.b, options);

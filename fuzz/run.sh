@@ -30,7 +30,7 @@ declare -A sources=(
   [fuzz_geojson]="io/geojson_reader.cpp io/geojson_writer.cpp io/format.cpp io/wkt_reader.cpp io/native_json.cpp io/parts.cpp io/ring_rules.cpp"
   [fuzz_native_json]="io/native_json.cpp io/ring_rules.cpp"
   [fuzz_wkb]="io/wkb_reader.cpp io/wkb_writer.cpp io/ring_rules.cpp"
-  [fuzz_operation]="api/mkbool.cpp io/wkt_writer.cpp io/geojson_writer.cpp io/native_json.cpp io/svg.cpp io/ring_rules.cpp"
+  [fuzz_operation]="api/mkbool.cpp api/fill.cpp io/wkt_writer.cpp io/geojson_writer.cpp io/native_json.cpp io/svg.cpp io/ring_rules.cpp"
 )
 
 failed=()
