@@ -44,7 +44,35 @@ std::string crossing_message(const CrossingEdges& e, const Polygon& p) {
          edge(e.second()) + "; the edges of a polygon may touch but must not cross";
 }
 
-// P is Point (doubles) or the kernel's own point type (exact rationals).
+// An exact rational in another rational type of the kernels (Boost.Multiprecision's).
+template <class Q>
+Q rational_as(const mpq_class& v) {
+  if constexpr (std::is_same_v<Q, mpq_class>) {
+    return v;
+  } else if constexpr (std::is_same_v<Q, boost::multiprecision::mpq_rational>) {
+    return Q(v.get_mpq_t());
+  } else {
+    // cpp_rational: numerator and denominator through their decimal text (input only, once).
+    const auto as_cpp_int = [](const mpz_class& z) { return boost::multiprecision::cpp_int(z.get_str()); };
+    return Q(as_cpp_int(v.get_num()), as_cpp_int(v.get_den()));
+  }
+}
+
+// The polygon with the kernel's own exact points.
+template <Kernel K>
+BasicPolygon<typename K::Point> kernel_polygon(const ExactPolygon& p) {
+  using Q = decltype(std::declval<typename K::Point>().x);
+  BasicPolygon<typename K::Point> out;
+  out.type = p.type;
+  for (const auto& ring : p.rings) {
+    out.rings.emplace_back();
+    for (const auto& v : ring) out.rings.back().push_back({rational_as<Q>(v.x), rational_as<Q>(v.y)});
+  }
+  return out;
+}
+
+// P is Point (doubles) or RationalPoint (exact rationals, run by an exact kernel on its own
+// number type).
 template <Kernel K, class P>
 BooleanOutput run(const BasicPolygon<P>& a, const BasicPolygon<P>& b, const BooleanOptions& o) {
   const Options opt{o.op, o.regular, o.sorted_ef ? EfOrganisation::sorted : EfOrganisation::hash,
@@ -63,7 +91,7 @@ BooleanOutput run(const BasicPolygon<P>& a, const BasicPolygon<P>& b, const Bool
     if constexpr (std::is_same_v<P, Point>) {
       r = boolean_op<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b), opt);
     } else {
-      r = boolean_op<K>(a, b, opt);
+      r = boolean_op<K>(kernel_polygon<K>(a), kernel_polygon<K>(b), opt);
     }
   } catch (const CrossingEdges& e) {
     const auto& p = e.polygon() == 0 ? a : b;
@@ -110,11 +138,14 @@ BooleanOutput compute(const ExactPolygon& a, const ExactPolygon& b, const Boolea
   if (da && db) return compute(*da, *db, options);
   const std::string_view name = options.kernel.empty() ? default_kernel() : std::string_view(options.kernel);
   if (name == ExactKernel::name || name == RationalKernel::name) return run<RationalKernel>(a, b, options);
+  if (name == RationalMpKernel::name) return run<RationalMpKernel>(a, b, options);
+  if (name == RationalCppKernel::name) return run<RationalCppKernel>(a, b, options);
   if (std::find(kernel_names().begin(), kernel_names().end(), name) == kernel_names().end()) {
     return compute(Polygon{}, Polygon{}, options);  // the unknown-kernel message
   }
-  throw std::invalid_argument("kernel '" + std::string(name) + "' takes doubles only; coordinates that are not doubles need " +
-                              std::string(ExactKernel::name) + " or " + std::string(RationalKernel::name));
+  throw std::invalid_argument("kernel '" + std::string(name) + "' takes doubles only; coordinates that are not doubles need an exact kernel (" +
+                              std::string(ExactKernel::name) + ", " + std::string(RationalKernel::name) + ", " +
+                              std::string(RationalMpKernel::name) + " or " + std::string(RationalCppKernel::name) + ")");
 }
 
 std::vector<RationalPoint> exact_vertices(const OutputIrreducible& cycle) {

@@ -105,8 +105,9 @@ BooleanOutput intersection_all(const MultiPolygon& parts, const BooleanOptions& 
 BooleanOutput make_valid(const MultiPolygon& input, const BooleanOptions& options);
 // The same over exact rational coordinates (for example an exact result fed back in, see
 // exact_vertices). Polygons whose coordinates are all doubles go to the kernel asked for;
-// others need an exact kernel over GMP rationals: the default, "exact" and "rational" all
-// run the rational kernel (stats.kernel says so); other kernels throw std::invalid_argument.
+// others need an exact kernel over rationals: the default, "exact" and "rational" run the
+// rational kernel (stats.kernel says so), "rational-mp" and "rational-cpp" themselves; the
+// rounded kernels throw std::invalid_argument.
 BooleanOutput compute(const ExactPolygon& a, const ExactPolygon& b, const BooleanOptions& options);
 
 // The exact vertices of a result cycle (asked for with BooleanOptions::exact_coordinates).

@@ -230,12 +230,20 @@ class SnapGrid {
     return spacing_.get_str();
   }
 
-  // The pixel index of coordinate v: floor(v / g + 1/2).
+  // The pixel index of coordinate v: floor(v / g + 1/2). Throws std::range_error when it is
+  // beyond 2^62 in magnitude.
   std::int64_t index_of(double v) const {
+    const std::optional<std::int64_t> k = index_in_range(v);
+    if (!k) throw std::range_error("snap rounding: a coordinate beyond the grid's index range");
+    return *k;
+  }
+  // The same, or nothing when the index is beyond 2^62 in magnitude (a bound of an interval
+  // box may be, when the coordinate it bounds is not).
+  std::optional<std::int64_t> index_in_range(double v) const {
     if (exponent_) {
       // v 2^-e is exact unless it underflows, and then it is far below 1/2 in magnitude.
       const double t = std::ldexp(v, -*exponent_);
-      if (std::fabs(t) >= 0x1p62) throw std::range_error("snap rounding: a coordinate beyond the grid's index range");
+      if (!(std::fabs(t) < 0x1p62)) return std::nullopt;
       if (std::fabs(t) >= 0x1p52) return static_cast<std::int64_t>(t);  // an integer already
       const double f = std::floor(t);
       return static_cast<std::int64_t>(t >= f + 0.5 ? f + 1 : f);  // f + 0.5 is exact here
@@ -251,19 +259,28 @@ class SnapGrid {
       const double e = (std::fabs(t) + std::fabs(s) + 2) * 0x1p-49;
       if (d > e && d < 1 - e) return static_cast<std::int64_t>(f);
     }
-    return index_of(mpq_class(v));
+    if (!std::isfinite(v)) return std::nullopt;
+    return index_in_range(mpq_class(v));
   }
-  std::int64_t index_of(const mpq_class& v) const {
+  std::optional<std::int64_t> index_in_range(const mpq_class& v) const {
     const mpq_class t = v / spacing_ + mpq_class(1, 2);
     mpz_class f;
     mpz_fdiv_q(f.get_mpz_t(), t.get_num_mpz_t(), t.get_den_mpz_t());
+    if (mpz_sizeinbase(f.get_mpz_t(), 2) > 62) return std::nullopt;
     return f.get_si();
   }
+  std::int64_t index_of(const mpq_class& v) const {
+    const std::optional<std::int64_t> k = index_in_range(v);
+    if (!k) throw std::range_error("snap rounding: a coordinate beyond the grid's index range");
+    return *k;
+  }
   // The index of a coordinate known to lie in [lo, hi] (exact when lo == hi): the index is
-  // monotone, so equal indices at both ends decide it.
+  // monotone, so equal indices at both ends decide it. A bound whose index is out of range
+  // decides nothing (the box of a crossing can be far wider than the grid's range).
   std::int64_t index_of(double lo, double hi, const ExactCoordinate& exact) const {
-    const std::int64_t a = index_of(lo);
-    if (lo == hi || a == index_of(hi)) return a;
+    if (lo == hi) return index_of(lo);
+    const std::optional<std::int64_t> a = index_in_range(lo);
+    if (a && a == index_in_range(hi)) return *a;
     return index_of(exact.value(lo));
   }
   Pixel pixel_of(const SnapPoint& p) const { return {index_of(p.x_lo, p.x_hi, p.qx), index_of(p.y_lo, p.y_hi, p.qy)}; }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <new>
 #include <optional>
+#include <stdexcept>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "cli/output_file.hpp"
 #include "cli/stats.hpp"
 #include "io/file.hpp"
+#include "io/native_json.hpp"
 #include "io/parts.hpp"
 #include "io/wkt.hpp"
 
@@ -127,6 +129,13 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
     if (!rule) throw CaseError{"unknown fill_rule '" + name + "' (expected evenodd, nonzero, positive, negative or union)"};
     if (!options.regular) throw CaseError{"a fill rule gives regular results only (the batch runs --non-regular)"};
   }
+  // The polygons: "a_wkt" and "b_wkt", or "a" and "b" in the native JSON form, whose
+  // coordinates may be exact rationals (an exact result fed back in).
+  const bool native = line.contains("a") || line.contains("b");
+  if (native && (line.contains("a_wkt") || line.contains("b_wkt"))) {
+    throw CaseError{"give the polygons as \"a_wkt\" and \"b_wkt\" or as \"a\" and \"b\", not both"};
+  }
+  if (native && rule) throw CaseError{"\"fill_rule\" reads \"a_wkt\" and \"b_wkt\" (any rings), not \"a\" and \"b\""};
   const auto read = [&](const char* key) {
     if (!rule) return read_case_polygon(member_string(line, key), key);
     try {
@@ -135,8 +144,30 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
       throw CaseError{std::string(key) + ": " + e.what()};
     }
   };
-  const Polygon a = read("a_wkt");
-  const Polygon b = read("b_wkt");
+  const auto read_native = [&](const char* key) {
+    const auto it = line.find(key);
+    if (it == line.end()) throw CaseError{std::string("missing \"") + key + "\""};
+    if (!it->is_object()) throw CaseError{std::string("\"") + key + "\" is not a native JSON polygon object"};
+    try {
+      return read_native_json_exact(it->dump());
+    } catch (const InvalidInput& e) {
+      throw CaseError{std::string(key) + ": " + e.what()};
+    }
+  };
+  std::optional<ExactPolygon> exact_a, exact_b;
+  Polygon a, b;
+  if (native) {
+    exact_a = read_native("a");
+    exact_b = read_native("b");
+  } else {
+    a = read("a_wkt");
+    b = read("b_wkt");
+  }
+  bool want_result = options.exact_result;
+  if (const auto it = line.find("exact_result"); it != line.end()) {
+    if (!it->is_boolean()) throw CaseError{"\"exact_result\" is not true or false"};
+    want_result = it->get<bool>();
+  }
 
   BooleanOptions o;
   o.fill_rule = rule;
@@ -164,9 +195,12 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
     o.grid = it->get<std::string>();
   }
   if (o.rounding == RoundingMode::nearest && !o.grid.empty()) throw CaseError{"\"grid\" snaps, which rounding nearest does not"};
+  o.exact_coordinates = want_result;
   BooleanOutput r;
   try {
-    r = compute(a, b, o);
+    r = native ? compute(*exact_a, *exact_b, o) : compute(a, b, o);
+  } catch (const std::invalid_argument& e) {  // a kernel that takes doubles only, given rationals
+    throw CaseError{e.what()};
   } catch (const InvalidInput& e) {
     throw CaseError{e.what()};
   } catch (const KernelFailure& e) {
@@ -180,8 +214,15 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
   out["area"] = r.stats.area && std::isfinite(*r.stats.area) ? Json(*r.stats.area) : Json(nullptr);
   out["area_beyond_double"] = r.stats.area_beyond_double;
   out["area_exact"] = r.stats.area_exact ? Json(*r.stats.area_exact) : Json(nullptr);
-  // Inputs of WKT are islands, so the result is bounded; the check keeps that an invariant.
-  if (r.output.unbounded) throw CaseError{"the result is unbounded and has no WKT form"};
+  // The result in the native JSON form (exact coordinates from exact kernels), itself a
+  // valid "a" or "b" of a later line.
+  if (want_result) out["result"] = Json::parse(write_native_json(r.output, r.stats.kernel));
+  // Inputs of WKT are islands, so the result is bounded; native input may be unbounded, and
+  // then only "result" can hold it.
+  if (r.output.unbounded) {
+    if (!want_result) throw CaseError{"the result is unbounded and has no WKT form (ask for \"exact_result\")"};
+    return;
+  }
   out["result_wkt"] = write_wkt(r.output);
 }
 
@@ -223,6 +264,7 @@ std::size_t run_batch(const BatchOptions& options) {
                    {"area_exact", nullptr},  {"valid", nullptr},
                    {"op_ns", nullptr},       {"snapped", nullptr},
                    {"line", line_number}};
+    if (options.exact_result) result["result"] = nullptr;
     try {
       run_case(raw, options, result);
     } catch (const CaseError& e) {
@@ -238,6 +280,7 @@ std::size_t run_batch(const BatchOptions& options) {
     if (result.contains("error")) {
       // A failed case reports no partial result.
       for (const char* key : {"result_wkt", "area", "area_beyond_double", "area_exact", "valid", "op_ns", "snapped"}) result[key] = nullptr;
+      if (result.contains("result")) result["result"] = nullptr;
     }
     out.write(result.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n");
   }

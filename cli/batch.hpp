@@ -20,13 +20,18 @@ struct BatchOptions {
   // Rounding of each line's result_wkt (a line's own "rounding" and "grid" override them).
   RoundingMode rounding = RoundingMode::certified;
   std::string grid;
+  // Every line gets "result": the result in the native JSON form, with exact coordinates
+  // from exact kernels (a line's own "exact_result" true or false overrides it).
+  bool exact_result = false;
 };
 
 // Each non-blank input line is an object with "id" (any JSON value, echoed), "op"
-// (intersection, union, difference, symdifference or xor), "a_wkt" and "b_wkt"; other
-// members are ignored, except "area_exact": false, which leaves that line's exact area out,
-// and "fill_rule" (evenodd, nonzero, positive, negative or union), which reads a_wkt and
-// b_wkt as any rings by that rule (regular batches only).
+// (intersection, union, difference, symdifference or xor), and the polygons as "a_wkt" and
+// "b_wkt", or as "a" and "b" in the native JSON form (objects; coordinates may be exact
+// rationals, and a line's "result" is such a polygon); other members are ignored, except
+// "area_exact": false, which leaves that line's exact area out, "exact_result" (see
+// BatchOptions), "rounding", "grid", and "fill_rule" (evenodd, nonzero, positive, negative or
+// union), which reads a_wkt and b_wkt as any rings by that rule (regular batches only).
 // Each gives one output line, in input order: id, op, kernel, result_wkt, area (null beyond
 // the largest double), area_beyond_double, area_exact, valid, op_ns, line (1-based input
 // line), and error when the

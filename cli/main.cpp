@@ -169,10 +169,11 @@ int run_parts_form(int argc, char** argv) {
 
 int run_batch_form(int argc, char** argv) {
   CLI::App app("Runs one Boolean operation per JSON line. Each input line is an object with \"id\",\n"
-               "\"op\" (intersection, union, difference, symdifference or xor), \"a_wkt\" and \"b_wkt\";\n"
-               "each output line has id, op, kernel, result_wkt, area, area_beyond_double,\n"
-               "area_exact, valid, op_ns, line, and error when that case failed. A failed case\n"
-               "never stops the batch.\n",
+               "\"op\" (intersection, union, difference, symdifference or xor), \"a_wkt\" and \"b_wkt\"\n"
+               "(or \"a\" and \"b\": native JSON polygons, exact rationals allowed); each output line\n"
+               "has id, op, kernel, result_wkt, area, area_beyond_double, area_exact, valid, op_ns,\n"
+               "snapped, line, result (with --exact-result), and error when that case failed. A failed\n"
+               "case never stops the batch.\n",
                "mkbool batch");
   BatchOptions o;
   bool non_regular = false;
@@ -183,6 +184,9 @@ int run_batch_form(int argc, char** argv) {
   app.add_flag("--no-area-exact", no_area_exact,
                "leave out area_exact (the exact area as a rational), which on results with many crossing points "
                "costs more than the operation; a line's own \"area_exact\": false does the same for that line");
+  app.add_flag("--exact-result", o.exact_result,
+               "add \"result\": the result as a native JSON polygon with exact coordinates (exact kernels), "
+               "which a later line can take as \"a\" or \"b\"; a line's own \"exact_result\" does the same for that line");
   app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
   std::string rounding = "certified";
   app.add_option("--rounding", rounding, std::string(rounding_help) + "; a line's own \"rounding\" does the same for that line")

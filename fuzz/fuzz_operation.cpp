@@ -2,7 +2,8 @@
 // (fuzz/operation_bytes.hpp), every operation, regular and non-regular, under the exact and
 // rational kernels; no crash, no sanitizer report, and the two kernels agree exactly (the
 // same error for input outside the domain, else the same result polygons, types, exact
-// coordinates and area). Each result also goes through every writer.
+// coordinates, area and written output); certified rounding never fails its self-check and
+// writes a valid output. Each result also goes through every writer.
 // [MK89 §3.1] (the six steps) [MK89 §2.3] (operations) [BRIEF §3] (exact kernels agree)
 // Preconditions: built by fuzz/run.sh (clang, -fsanitize=fuzzer,address,undefined).
 #include <algorithm>
@@ -49,10 +50,9 @@ Outcome run(const mk::fuzz::DecodedCase& c, const char* kernel) {
   options.regular = c.regular;
   options.kernel = kernel;
   options.exact_coordinates = true;  // compared below
-  // Nearest rounding: this target checks the exact core. Certified rounding (snap rounding,
-  // issue 12) is left out until a known defect is fixed: on some inputs the exact and
-  // rational kernels' snap roundings disagree (issue 12's note has the input).
-  options.rounding = mk::RoundingMode::nearest;
+  // Certified rounding (the default): where the nearest doubles are not valid the written
+  // output is a snap rounding, which must be valid, free of self-check failures, and the
+  // same for both kernels (it depends on the exact result only).
   options.area_exact = true;
   try {
     const mk::BooleanOutput r = mk::compute(c.a, c.b, options);
@@ -64,6 +64,18 @@ Outcome run(const mk::fuzz::DecodedCase& c, const char* kernel) {
     o.extras.push_back(r.output.unbounded ? "unbounded" : "bounded");
     o.extras.push_back(r.output.rounded_valid.value_or(false) ? "valid" : "invalid");
     o.extras.push_back("area " + r.stats.area_exact.value_or("none"));
+    const mk::RoundingReport& rounding = r.output.rounding;
+    if (!rounding.failure.empty()) {
+      std::fprintf(stderr, "%s: certified rounding failed: %s\n", kernel, rounding.failure.c_str());
+      __builtin_trap();
+    }
+    if (!rounding.valid && !r.output.unbounded) {
+      std::fprintf(stderr, "%s: certified rounding wrote an invalid output\n", kernel);
+      __builtin_trap();
+    }
+    o.extras.push_back(rounding.snapped ? "snapped " + rounding.grid : "nearest");
+    // The written polygons (the snap rounding when snapped), as text.
+    if (!r.output.unbounded) o.extras.push_back(mk::write_wkt(r.output));
     // Every writer takes every result (WKT and GeoJSON refuse unbounded ones by name).
     (void)mk::write_native_json(r.output, r.stats.kernel);
     (void)mk::write_svg(c.a, c.b, r.output);

@@ -195,5 +195,34 @@ TEST(CertifiedRounding, ValidNearestOutputIsLeftAlone) {
   EXPECT_EQ(r.output.polygons.size(), 1u);
 }
 
+// Found by fuzzing (fuzz_operation): A is a long two-sided ring, B a thin triangle reaching the
+// subnormal range; their non-regular intersection is one dangling edge between two exact
+// points that both round to (5e-324, 0), and the nearest doubles make it a zero-length edge.
+// Snap rounding on the grid 2^-1074 collapses it to a point. A crossing's interval box
+// reached far beyond the grid's 2^62-pixel range while the point itself did not: the
+// `exact` kernel threw there (the box's bound was taken as a coordinate), `rational` did not.
+// Both must write the same valid point.
+TEST(CertifiedRounding, KernelsAgreeWhereACrossingsBoxLeavesTheGridRange) {
+  const Polygon a{{{{3.0333174339881949e+180, 1.3980432860550687e-76}, {0, 0}}}};
+  const Polygon b{{{{1.3980432860951324e-76, 1.3980432860550687e-76}, {1, 7}, {1e154, 1.7976931348623157e+308},
+                    {4.9406564584124654e-324, 0}}}};
+  for (const char* kernel : {"exact", "rational"}) {
+    BooleanOptions o;
+    o.op = Operation::intersection;
+    o.regular = false;
+    o.kernel = kernel;
+    const BooleanOutput r = compute(a, b, o);
+    EXPECT_EQ(r.output.rounding.failure, "") << kernel;
+    EXPECT_TRUE(r.output.rounding.snapped) << kernel;
+    EXPECT_TRUE(r.output.rounding.valid) << kernel;
+    EXPECT_EQ(r.output.rounding.grid, "2^-1074") << kernel;
+    ASSERT_EQ(r.output.isolated_points.size(), 1u) << kernel;
+    EXPECT_TRUE(r.output.dangling_edges.empty()) << kernel;
+    EXPECT_EQ(r.output.isolated_points[0].x, 0x1p-1074) << kernel;
+    EXPECT_EQ(r.output.isolated_points[0].y, 0.0) << kernel;
+    EXPECT_TRUE(r.output.polygons.empty()) << kernel;
+  }
+}
+
 }  // namespace
 }  // namespace mk

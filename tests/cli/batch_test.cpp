@@ -250,5 +250,66 @@ TEST(cliBatch, EmptyBatchWritesNothing) {
   EXPECT_EQ(r.out, "");
 }
 
+// Exact in, exact out (issue 12): a line's "result" (asked with "exact_result" or
+// --exact-result) is a native JSON polygon with exact coordinates, taken back as "a" or "b".
+// Hand-derived: A ∩ B below is the quadrilateral (0 0, 1 0, 1 2/3, 3/4 3/4) of area 11/24;
+// inside the square [0, 1/3]² only y <= x binds (A's edge y = 1 - x/3 stays above 1/3), so
+// (A ∩ B) ∩ C is the triangle (0 0, 1/3 0, 1/3 1/3) of area 1/18, and (A ∩ B) ∪ C has area
+// 11/24 + 1/9 - 1/18 = 37/72.
+TEST(cliBatch, ExactResultsAreFedBackExactlyInEveryExactKernel) {
+  const std::string first = Json{{"id", 1}, {"op", "intersection"}, {"a_wkt", "POLYGON((0 0,3 0,0 1,0 0))"},
+                                 {"b_wkt", "POLYGON((0 0,1 0,1 1,0 0))"}, {"exact_result", true}}.dump() + "\n";
+  const ProcessResult r1 = run_mkbool({"batch", "-"}, first);
+  ASSERT_EQ(r1.exit_code, 0) << describe(r1);
+  const auto lines1 = parse_lines(r1.out);
+  ASSERT_EQ(lines1.size(), 1u);
+  const Json ab = lines1[0]["result"];
+  ASSERT_TRUE(ab.is_object()) << lines1[0];
+  EXPECT_NE(ab.dump().find("\"2/3\""), std::string::npos) << ab;  // the crossing (1, 2/3), exactly
+  const Json c = Json::parse(R"({"type": "island", "rings": [[["0", "0"], ["1/3", "0"], ["1/3", "1/3"], ["0", "1/3"]]]})");
+  for (const std::string_view kernel : kernel_names()) {
+    std::string input;
+    input += Json{{"id", "and"}, {"op", "intersection"}, {"a", ab}, {"b", c}}.dump() + "\n";
+    input += Json{{"id", "or"}, {"op", "union"}, {"a", ab}, {"b", c}}.dump() + "\n";
+    const ProcessResult r = run_mkbool({"batch", "-", "--kernel", std::string(kernel), "--exact-result"}, input);
+    ASSERT_EQ(r.exit_code, 0) << describe(r);
+    const auto lines = parse_lines(r.out);
+    ASSERT_EQ(lines.size(), 2u) << r.out;
+    if (!is_exact_kernel(kernel)) {
+      // 1/3 is not a double: the rounded kernels refuse by name.
+      for (const auto& line : lines) EXPECT_NE(line["error"].get<std::string>().find("takes doubles only"), std::string::npos) << line;
+      continue;
+    }
+    EXPECT_EQ(lines[0]["area_exact"], "1/18") << kernel << ": " << lines[0];
+    EXPECT_EQ(lines[1]["area_exact"], "37/72") << kernel << ": " << lines[1];
+    EXPECT_NE(lines[0]["result"].dump().find("\"1/3\""), std::string::npos) << lines[0];
+    EXPECT_EQ(lines[0]["result_wkt"], "POLYGON ((0 0, 0.3333333333333333 0, 0.3333333333333333 0.3333333333333333, 0 0))");
+  }
+}
+
+TEST(cliBatch, NativePolygonsAreCheckedAndNotMixedWithWkt) {
+  const std::string bad_type = R"j({"op":"union","a":[[0,0]],"b":{"rings":[[[0,0],[1,0],[0,1]]]}})j";
+  const std::string mixed = R"j({"op":"union","a":{"rings":[[[0,0],[1,0],[0,1]]]},"b_wkt":"POLYGON((0 0,1 0,0 1,0 0))"})j";
+  const std::string bad_number = R"j({"op":"union","a":{"rings":[[[0,0],["1/0",0],[0,1]]]},"b":{"rings":[[[0,0],[1,0],[0,1]]]}})j";
+  const std::string unbounded = R"j({"op":"union","a":{"type":"hole","rings":[[[0,0],[1,0],[0,1]]]},"b":{"rings":[[[5,5],[6,5],[5,6]]]}})j";
+  const ProcessResult r = run_mkbool({"batch", "-"}, bad_type + "\n" + mixed + "\n" + bad_number + "\n" + unbounded + "\n");
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 4u) << r.out;
+  EXPECT_NE(lines[0]["error"].get<std::string>().find("\"a\" is not a native JSON polygon object"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[1]["error"].get<std::string>().find("not both"), std::string::npos) << lines[1];
+  EXPECT_NE(lines[2]["error"].get<std::string>().find("a: native JSON at rings[0][1][0]"), std::string::npos) << lines[2];
+  EXPECT_NE(lines[3]["error"].get<std::string>().find("unbounded"), std::string::npos) << lines[3];
+  // The unbounded result has no WKT, but its native form is written when asked for.
+  std::string asked = unbounded;
+  asked.insert(asked.size() - 1, ",\"exact_result\":true");
+  const ProcessResult r2 = run_mkbool({"batch", "-"}, asked + "\n");
+  const auto lines2 = parse_lines(r2.out);
+  ASSERT_EQ(lines2.size(), 1u) << r2.out;
+  EXPECT_FALSE(lines2[0].contains("error")) << lines2[0];
+  EXPECT_TRUE(lines2[0]["result_wkt"].is_null());
+  EXPECT_EQ(lines2[0]["result"]["unbounded"], true);
+}
+
 }  // namespace
 }  // namespace mk::test
