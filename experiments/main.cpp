@@ -19,6 +19,7 @@
 #include <gmp.h>
 
 #include "api/mkbool.hpp"
+#include "arithmetic/snap_grid.hpp"
 #include "build_commit.hpp"
 #include "experiments/arguments.hpp"
 #include "experiments/artefacts.hpp"
@@ -47,6 +48,8 @@ struct RunArgs {
   std::size_t peer_every = 0;
   std::string cases;
   std::string out;
+  std::string rounding = "certified";
+  std::string grid;
 };
 
 std::string join(const std::vector<std::string>& v) {
@@ -172,6 +175,8 @@ int run_command(const RunArgs& a, const std::string& command_line) {
   o.timeout_seconds = a.timeout > 0 ? a.timeout : (a.quick ? 20 : a.full ? 300 : 60);
   o.memory_mb = a.memory_mb > 0 ? a.memory_mb : default_memory_mb(o.jobs);
   o.progress = ::isatty(2) != 0;
+  o.rounding = a.rounding == "nearest" ? mk::RoundingMode::nearest : mk::RoundingMode::certified;
+  o.grid = a.grid;
 
   fs::create_directories(a.out);
   const std::string level = a.quick ? "quick" : a.full ? "full" : "default";
@@ -226,6 +231,8 @@ int run_command(const RunArgs& a, const std::string& command_line) {
           << "peers: on every external case; on generated cases with index divisible by " << o.peer_every
           << (o.peer_max_size > 0 ? " and at most " + std::to_string(o.peer_max_size) + " input vertices" : std::string())
           << ", regular operations\n"
+          << "rounding of the written output: " << a.rounding
+          << (a.grid.empty() ? std::string(" (grid of doubles at the result's scale when snapping)") : "; grid " + a.grid) << "\n"
           << "finished: " << utc_now() << "\n";
     for (const auto& l : environment_lines()) sweep << l << "\n";
   }
@@ -367,6 +374,12 @@ int main(int argc, char** argv) {
       ->check(positive_seconds());
   run->add_option("--memory-mb", ra.memory_mb, "address-space limit per worker (default: 80% of RAM / jobs)")
       ->check(whole_number(1, UINT64_MAX >> 20, "a whole number of megabytes, at least 1"));
+  run->add_option("--rounding", ra.rounding,
+                  "rounding of each kernel's written output, recorded in the rounding columns: certified (default: the "
+                  "nearest doubles when valid, else snap rounding) or nearest")
+      ->check(CLI::IsMember({"certified", "nearest"}));
+  run->add_option("--grid", ra.grid, "snap every result onto multiples of G (a positive decimal or fraction p/q, exact)")
+      ->check(arguments::accepted_by([](const std::string& g) { (void)mk::SnapGrid::parse(g); }, "grid"));
   run->add_flag("--no-artefacts", ra.no_artefacts, "skip failure pictures and regression cases");
   run->add_flag("--no-report", ra.no_report, "skip the report");
   run->add_flag("--no-plots", ra.no_plots, "report without running the plot script");

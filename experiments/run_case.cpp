@@ -263,6 +263,8 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
         BooleanOptions options{op, regular, o.kernels[k]};
         options.area = false;  // the verdict measures areas against the reference itself
         options.exact_coordinates = true;  // assess() compares exact results exactly
+        options.rounding = o.rounding;
+        options.grid = o.grid;
         const BooleanOutput out = compute(cs.a, cs.b, options);
         const Counts counts = read_counters();
         r.predicate_calls = counts.calls;

@@ -36,6 +36,10 @@ struct RunOptions {
   // case (reported, --cases): the default sweep samples them, --full runs them all.
   std::size_t peer_every = 1;
   std::size_t peer_max_size = 0;
+  // How each kernel's written output is rounded (columns nearest_valid, certified_*):
+  // certified by default, or snapped onto this grid (mk::BooleanOptions::grid) when set.
+  RoundingMode rounding = RoundingMode::certified;
+  std::string grid;
   // Tests only: called in the worker before each kernel run, e.g. to crash or hang there.
   std::function<void(const std::string& kernel, const CaseSpec& spec)> fault_injection;
 };

@@ -60,6 +60,35 @@ TEST(Sweep, TinySweepInProcess) {
   for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_LE(rows[i - 1].case_index, rows[i].case_index);
 }
 
+// --grid: every bounded result of an exact kernel is snapped onto the user's grid and
+// written valid, and verdicts still compare the exact results; --rounding nearest leaves
+// the nearest doubles and never snaps.
+TEST(Sweep, RoundingOptionsReachEveryRun) {
+  const auto plan = plan_sweep({SweepLevel::quick, 1, 3, {"shared_edge", "ulp_perturbed"}});
+  RunOptions o;
+  o.kernels = {"exact", "rational"};
+  o.isolate = false;
+  o.grid = "0.001";  // not a power of two: its points are not all doubles
+  const auto snapped = run_sweep(select_shard(plan, {}), o, "");
+  ASSERT_FALSE(snapped.empty());
+  std::size_t bounded = 0;
+  for (const auto& r : snapped) {
+    if (r.kernel == "reference" || !r.certified_snapped) continue;
+    ++bounded;
+    EXPECT_EQ(r.certified_snapped, true) << to_csv(r);
+    EXPECT_EQ(r.certified_valid, true) << to_csv(r);
+  }
+  EXPECT_GT(bounded, snapped.size() / 4);
+  expect_exact_kernels_match(snapped);
+  o.grid.clear();
+  o.rounding = RoundingMode::nearest;
+  for (const auto& r : run_sweep(select_shard(plan, {}), o, "")) {
+    if (r.certified_snapped) {
+      EXPECT_EQ(*r.certified_snapped, false) << to_csv(r);
+    }
+  }
+}
+
 TEST(Sweep, ACrashAndAHangCostOneRunEach) {
   const auto plan = plan_sweep({SweepLevel::quick, 1, 1, {"shared_edge"}});
   ASSERT_GE(plan.size(), 2u);
