@@ -164,13 +164,19 @@ std::vector<RationalPoint> exact_vertices(const OutputIrreducible& cycle) {
 }
 
 ExactPolygon exact_result(const Output& output) {
-  if (!output.dangling_edges.empty() || !output.isolated_points.empty()) {
-    throw std::invalid_argument("a result with dangling edges or isolated points (non-regular) has no exact polygon form here");
+  if (output.unbounded) {
+    for (const auto& c : output.irreducible) {
+      if (!c.vertices.empty() && c.vertices.size() < 3) {
+        throw std::invalid_argument(
+            "an unbounded result with dangling edges or isolated points has no polygon form: a hole-type polygon is "
+            "the closure of its area's complement, which its two-sided and one-sided rings would not add to");
+      }
+    }
   }
   ExactPolygon p;
   p.type = output.unbounded ? PolygonType::hole : PolygonType::island;
   for (const auto& c : output.irreducible) {
-    if (c.vertices.size() >= 3) p.rings.push_back(exact_vertices(c));
+    if (!c.vertices.empty()) p.rings.push_back(exact_vertices(c));
   }
   return p;
 }

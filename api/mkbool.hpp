@@ -115,9 +115,11 @@ BooleanOutput compute(const ExactPolygon& a, const ExactPolygon& b, const Boolea
 std::vector<RationalPoint> exact_vertices(const OutputIrreducible& cycle);
 
 // The exact result as a polygon of the paper's model, ready to be an operand: every cycle
-// with at least 3 vertices as a ring (they nest by parity), type hole when unbounded.
-// Throws std::invalid_argument when the output has no exact coordinates, or has dangling
-// edges or isolated points (non-regular results), whose exact form is not kept.
+// as a ring (those of 3 or more vertices nest by parity; dangling edges are rings of 2
+// vertices, isolated points rings of 1, which the model reads as parts of the point set),
+// type hole when unbounded. Throws std::invalid_argument when the output has no exact
+// coordinates, or is unbounded with dangling edges or isolated points (a hole-type
+// polygon's degenerate rings would not add their points).
 ExactPolygon exact_result(const Output& output);
 
 }  // namespace mk

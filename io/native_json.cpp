@@ -158,19 +158,16 @@ void append_points(std::string& out, const std::vector<Point>& points) {
 namespace {
 
 // The output form {"kernel", "unbounded", ..., "polygons": [{"type", "vertices", "exact"}]}
-// as an operand: its cycles of 3 or more vertices as rings (exact coordinates when given),
-// type hole when unbounded.
+// as an operand: every cycle as a ring (exact coordinates when given), type hole when
+// unbounded. The paper's model reads that as the result's point set: the cycles of 3 or
+// more vertices nest by parity into the area part, and cycles of 2 vertices (dangling
+// edges) and of 1 (isolated points) add their points [MK89 §2.2] [BRIEF §1].
 template <class P>
 BasicPolygon<P> read_result_form(const Json& root) {
   BasicPolygon<P> polygon;
   if (const auto u = root.find("unbounded"); u != root.end()) {
     if (!u->is_boolean()) fail("unbounded", "expected true or false, found " + json_type_name(*u));
     polygon.type = u->template get<bool>() ? PolygonType::hole : PolygonType::island;
-  }
-  for (const char* key : {"dangling_edges", "isolated_points"}) {
-    if (const auto it = root.find(key); it != root.end() && it->is_array() && !it->empty()) {
-      fail(key, "a non-regular result (dangling edges or isolated points) is not read back as an operand");
-    }
   }
   const Json& polygons = root.at("polygons");
   if (!polygons.is_array()) fail("polygons", "expected an array of polygons, found " + json_type_name(polygons));
@@ -183,7 +180,11 @@ BasicPolygon<P> read_result_form(const Json& root) {
     if (vertices == c.end()) fail(path, "missing \"vertices\" member");
     const bool use_exact = exact != c.end() && !std::is_same_v<P, Point>;
     BasicRing<P> ring = read_ring<P>(use_exact ? *exact : *vertices, path + (use_exact ? ".exact" : ".vertices"));
-    if (ring.size() >= 3) polygon.rings.push_back(std::move(ring));
+    if (ring.size() < 3 && polygon.type == PolygonType::hole) {
+      fail(path, "an unbounded result with dangling edges or isolated points is not read back as an operand (a "
+                 "hole-type polygon is the closure of its area's complement, to which degenerate rings add nothing)");
+    }
+    if (!ring.empty()) polygon.rings.push_back(std::move(ring));
   }
   return polygon;
 }

@@ -20,9 +20,11 @@ namespace mk {
 // ring of 1 point (one-sided) or 2 points (two-sided) is allowed, an empty ring is not.
 // Throws mk::InvalidInput: "native JSON line L, column C: <reason>" for JSON syntax errors,
 // "native JSON at <path>: <what>" for content errors (path like "rings[0][3][1]").
-// The output form of write_native_json(Output) is read as well: its cycles of 3 or more
-// vertices are the rings (nesting by parity gives the result's region), type hole when
-// "unbounded"; a result with dangling edges or isolated points is refused.
+// The output form of write_native_json(Output) is read as well: its cycles are the rings
+// (those of 3 or more vertices nest by parity into the area part, those of 2 and 1 vertices
+// are its dangling edges and isolated points), type hole when "unbounded": the result's
+// point set, regular or not (an unbounded result with dangling edges or isolated points is
+// refused: a hole-type polygon's degenerate rings would not add their points).
 Polygon read_native_json(std::string_view text);
 
 // The same, with coordinates taken exactly: strings may hold any rational "p/q" or decimal

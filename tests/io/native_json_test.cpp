@@ -171,5 +171,33 @@ TEST(ioNativeJson, OutputWriterForEmptyAndUnboundedResults) {
   EXPECT_EQ(j["polygons"][0]["type"], "hole");
 }
 
+// A non-regular result read back as an operand: every cycle is a ring, dangling edges rings
+// of 2 vertices and isolated points rings of 1, with their exact coordinates; an unbounded
+// result with such parts is refused by name.
+TEST(ioNativeJson, NonRegularResultsReadBackWithTheirDegenerateParts) {
+  Output out;
+  out.irreducible.push_back({{{0, 0}, {1, 0}, {0, 1}}, {"0", "0", "1", "0", "0", "1"}, PolygonType::island});
+  out.irreducible.push_back({{{1, 0}, {2, 0}}, {"1", "0", "2", "0"}, PolygonType::island});
+  out.irreducible.push_back({{{0.3333333333333333, 5}}, {"1/3", "5"}, PolygonType::island});
+  out.dangling_edges = {{{1, 0}, {2, 0}}};
+  out.isolated_points = {{0.3333333333333333, 5}};
+  const ExactPolygon p = read_native_json_exact(write_native_json(out, "exact"));
+  EXPECT_EQ(p.type, PolygonType::island);
+  ASSERT_EQ(p.rings.size(), 3u);
+  EXPECT_EQ(p.rings[0].size(), 3u);
+  ASSERT_EQ(p.rings[1].size(), 2u);
+  EXPECT_EQ(p.rings[1][1].x, mpq_class(2));
+  ASSERT_EQ(p.rings[2].size(), 1u);
+  EXPECT_EQ(p.rings[2][0].x, mpq_class(1, 3));
+  out.unbounded = true;
+  try {
+    (void)read_native_json_exact(write_native_json(out, "exact"));
+    FAIL() << "an unbounded result with a dangling edge was read";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("polygons[1]"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("unbounded result with dangling edges"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace mk

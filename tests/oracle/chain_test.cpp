@@ -116,5 +116,59 @@ TEST(ExactChain, ExactResultKeepsTheRegion) {
   EXPECT_THROW(compute(e, e, doubles_only), std::invalid_argument);
 }
 
+// Non-regular results fed back in (their dangling edges and isolated points as rings of 2
+// and 1 vertices), checked by the membership oracle, which shares no code with the core:
+// the polygon exact_result makes must be the point set the first operation defines (on
+// samples around every vertex, crossing and edge of A, B and the result), and the second
+// operation on it must be what its definition says.
+TEST(ExactChain, NonRegularResultsAreFedBackAsTheirPointSets) {
+  const char* env = std::getenv("MK_CHAIN_CASES");
+  const int cases = env ? std::atoi(env) / 2 : 150;
+  const std::uint64_t seed = 13;
+  std::mt19937_64 rng(seed);
+  std::printf("non-regular chain: seed %llu, %d chains\n", static_cast<unsigned long long>(seed), cases);
+  const Operation ops[] = {Operation::intersection, Operation::union_, Operation::difference,
+                           Operation::symmetric_difference};
+  int with_degenerate = 0, unbounded_refused = 0;
+  for (int i = 0; i < cases; ++i) {
+    const GeneratedPair pair = random_pair(static_cast<std::size_t>(i), rng);
+    const Operation op1 = ops[rng() % 4], op2 = ops[rng() % 4];
+    // C is island-type: the oracle reads a hole-type polygon whose rings share an edge as
+    // containing that edge, which the core (and A − int(B) in the brief) does not; that
+    // question is the oracle's, not the feeding back's (issue 12's note).
+    ExactPolygon c = shifted(pair.b);
+    c.type = PolygonType::island;
+    const std::string what = "chain " + std::to_string(i) + " (" + pair.family + ", " + pair.transform + "): (A " +
+                             std::string(operation_name(op1)) + " B) " + std::string(operation_name(op2)) + " C";
+    BooleanOptions o;
+    o.exact_coordinates = true;
+    o.area = false;
+    o.regular = false;
+    o.op = op1;
+    const BooleanOutput first = compute(pair.a, pair.b, o);
+    bool degenerate = false;
+    for (const auto& cycle : first.output.irreducible) degenerate = degenerate || cycle.vertices.size() < 3;
+    if (degenerate && first.output.unbounded) {
+      // Dangling parts of an unbounded result are not a hole-type polygon's points: refused.
+      EXPECT_THROW((void)exact_result(first.output), std::invalid_argument) << what;
+      ++unbounded_refused;
+      continue;
+    }
+    const ExactPolygon ab = exact_result(first.output);
+    with_degenerate += degenerate;
+    const Region ra = region_of(pair.a), rb = region_of(pair.b), rab = region_of(ab), rc = region_of(c);
+    const std::vector<QPoint> s1 = sample_points(ra, rb, rab, rng, 8);
+    EXPECT_EQ(first_contradiction(op1, false, ra, rb, rab, s1), "") << what << ": the fed-back first result";
+    o.op = op2;
+    const BooleanOutput second = compute(ab, c, o);
+    const Region rabc = region_of(exact_result(second.output));
+    const std::vector<QPoint> s2 = sample_points(rab, rc, rabc, rng, 8);
+    EXPECT_EQ(first_contradiction(op2, false, rab, rc, rabc, s2), "") << what << ": the second result";
+  }
+  std::printf("non-regular chain: %d of %d first results fed back with dangling edges or isolated points, %d unbounded "
+              "ones with them refused\n", with_degenerate, cases, unbounded_refused);
+  EXPECT_GT(with_degenerate, 0);
+}
+
 }  // namespace
 }  // namespace mk::oracle
