@@ -136,6 +136,9 @@ BooleanOutput compute(const ExactPolygon& a, const ExactPolygon& b, const Boolea
   const auto da = as_double_polygon(a);
   const auto db = da ? as_double_polygon(b) : std::nullopt;
   if (da && db) return compute(*da, *db, options);
+  if (options.fill_rule) {
+    throw std::invalid_argument("fill rules read coordinates that are doubles; these polygons have coordinates that are not");
+  }
   const std::string_view name = options.kernel.empty() ? default_kernel() : std::string_view(options.kernel);
   if (name == ExactKernel::name || name == RationalKernel::name) return run<RationalKernel>(a, b, options);
   if (name == RationalMpKernel::name) return run<RationalMpKernel>(a, b, options);

@@ -107,7 +107,7 @@ BooleanOutput make_valid(const MultiPolygon& input, const BooleanOptions& option
 // exact_vertices). Polygons whose coordinates are all doubles go to the kernel asked for;
 // others need an exact kernel over rationals: the default, "exact" and "rational" run the
 // rational kernel (stats.kernel says so), "rational-mp" and "rational-cpp" themselves; the
-// rounded kernels throw std::invalid_argument.
+// rounded kernels throw std::invalid_argument, as does a fill rule (fill rules read doubles).
 BooleanOutput compute(const ExactPolygon& a, const ExactPolygon& b, const BooleanOptions& options);
 
 // The exact vertices of a result cycle (asked for with BooleanOptions::exact_coordinates).

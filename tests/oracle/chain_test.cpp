@@ -114,6 +114,9 @@ TEST(ExactChain, ExactResultKeepsTheRegion) {
   BooleanOptions doubles_only;
   doubles_only.kernel = "double";
   EXPECT_THROW(compute(e, e, doubles_only), std::invalid_argument);
+  BooleanOptions with_rule;  // fill rules read doubles: refused, never ignored
+  with_rule.fill_rule = FillRule::nonzero;
+  EXPECT_THROW(compute(e, e, with_rule), std::invalid_argument);
 }
 
 // Non-regular results fed back in (their dangling edges and isolated points as rings of 2
