@@ -112,6 +112,41 @@ def exact_costs(args, a, b, report, md, out):
     print("\n".join(md[-len(rows) - 4:]))
 
 
+def chain_costs(args, a, b, report, md, out):
+    """What exact chaining costs: (A ∪ B) ∩ C with A ∪ B given as its exact result (the
+    default for a Result operand: its crossings are rationals, so the next operation runs the
+    rational kernel) or as its rounded polygons (.wkb), each converted once before timing;
+    and making the exact input from a new result (.exact_polygon(): exact coordinates, one
+    more run of the union). C is a third blob; medians of --exact-repeats rounds."""
+    c = mkbool.as_polygon(blob(args.n, (15.0, 25.0), 0.7))
+    ab = mkbool.union(a, b, kernel=args.kernel)
+    exact_in, rounded_in = ab.exact_polygon(), mkbool.as_polygon(ab.wkb)
+    variants = {
+        "union": lambda: mkbool.union(a, b, kernel=args.kernel),
+        "exact_polygon": lambda: mkbool.union(a, b, kernel=args.kernel).exact_polygon(),
+        "from_rounded": lambda: mkbool.intersection(rounded_in, c, kernel=args.kernel),
+        "from_exact": lambda: mkbool.intersection(exact_in, c, kernel=args.kernel),
+    }
+    times = {k: [] for k in variants}
+    for _ in range(args.exact_repeats):
+        for k, f in variants.items():
+            t0 = time.perf_counter()
+            f()
+            times[k].append(time.perf_counter() - t0)
+    med = {k: statistics.median(v) for k, v in times.items()}
+    report["chain_costs"] = {"median_s": med, "all_s": times, "exact_input": exact_in.is_exact,
+                             "crossings_of_union": ab.stats["crossings"]}
+    (out / "python_speed.json").write_text(json.dumps(report, indent=1) + "\n")
+    md += ["", f"Exact chaining, (A ∪ B) ∩ C on blobs (C a third blob), kernel `{args.kernel}`, medians of "
+           f"{args.exact_repeats} rounds: A ∪ B ({ab.stats['crossings']} crossings, exact input "
+           f"{'with rationals' if exact_in.is_exact else 'all doubles'}) {med['union'] * 1e3:.1f} ms, and its "
+           f".exact_polygon() {med['exact_polygon'] * 1e3:.1f} ms including that union; the intersection with C "
+           f"from the rounded union {med['from_rounded'] * 1e3:.1f} ms, from the exact one "
+           f"{med['from_exact'] * 1e3:.1f} ms ({med['from_exact'] / med['from_rounded']:.1f}x: the rational kernel)."]
+    (out / "python_speed.md").write_text("\n".join(md) + "\n")
+    print(md[-1])
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--n", type=int, default=100000)
@@ -231,6 +266,7 @@ def main():
     print("\n".join(md))
 
     exact_costs(args, a, b, report, md, out)
+    chain_costs(args, a, b, report, md, out)
 
     import matplotlib
     matplotlib.use("Agg")

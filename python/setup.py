@@ -57,7 +57,7 @@ class CMakeBuild(build_ext):
 
 setup(
     name="mkbool",
-    version="0.1.0",
+    version="0.2.0",
     description="Exact Boolean operations on polygons (Margalit & Knott 1989) and a robustness harness",
     packages=["mkbool"],
     package_dir={"mkbool": "mkbool"},

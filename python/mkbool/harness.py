@@ -105,6 +105,15 @@ def _regular(regular):
     return [bool(r) for r in regular]
 
 
+def _doubles(obj, role):
+    """The polygon of a case: every kernel of the harness reads doubles."""
+    p = as_polygon(obj, role)
+    if p.is_exact:
+        raise _mkbool.InvalidInput(f"{role}: coordinates that are not doubles (Fractions, an exact result); the "
+                                   "harness runs every kernel, which read doubles")
+    return p
+
+
 def _jobs(jobs):
     import os
     return int(jobs) if jobs else (os.cpu_count() or 1)
@@ -122,7 +131,7 @@ def _python_cases(names, count, base_seed, first_index):
             try:
                 pair = fn(seed)
                 a, b = pair
-                built.append((index, name, "", "", seed, as_polygon(a, "A"), as_polygon(b, "B")))
+                built.append((index, name, "", "", seed, _doubles(a, "A"), _doubles(b, "B")))
             except Exception as e:  # the harness records it and goes on
                 row = {c: None for c in columns()}
                 row.update(case=index, generator=name, variant="", params="", seed=seed, size=0,
@@ -169,7 +178,7 @@ def run_case(a, b, *, kernels=None, ops=None, regular=(True, False), peers=False
     ``peers=True``), each operation and regularity, against the exact reference."""
     if not isinstance(seed, numbers.Integral) or seed < 0:
         raise _mkbool.UsageError("seed must be a non-negative integer")
-    built = [(0, str(name), "", "", int(seed), as_polygon(a, "A"), as_polygon(b, "B"))]
+    built = [(0, str(name), "", "", int(seed), _doubles(a, "A"), _doubles(b, "B"))]
     rows = _h.run_built(built, _backends(kernels, peers), _ops(ops), _regular(regular), 1)
     return to_frame(rows) if as_frame else rows
 

@@ -57,13 +57,15 @@ void bind_batch(py::module_& m) {
   m.def(
       "compute_many",
       [](const std::string& op, const std::vector<InputPolygon>& as, const std::vector<InputPolygon>& bs,
-         const std::string& kernel, bool regular, bool area_exact, bool exact, int threads) {
+         const std::string& kernel, bool regular, bool area_exact, bool exact, int threads, const std::string& fill_rule,
+         const std::string& grid, const std::string& rounding) {
         if (as.size() != bs.size() && as.size() != 1 && bs.size() != 1) {
           throw std::invalid_argument("the sequences of A and B have different lengths (" + std::to_string(as.size()) +
                                       " and " + std::to_string(bs.size()) + "); give equal lengths or one polygon");
         }
-        Request request{operation_named(op), {}};
-        request.options = make_options(request.op, kernel, regular, area_exact, exact);
+        Request request{operation_named(op), {}, {}};
+        request.name = std::string(operation_name(request.op));
+        request.options = make_options(request.op, kernel, regular, area_exact, exact, fill_rule, grid, rounding);
         // No pair when either side is an empty sequence (one polygon is broadcast only
         // against a sequence that has pairs to make).
         const std::size_t n = as.empty() || bs.empty() ? 0 : std::max(as.size(), bs.size());
@@ -78,7 +80,7 @@ void bind_batch(py::module_& m) {
           const auto work = [&] {
             for (std::size_t i = next++; i < n; i = next++) {
               try {
-                outputs[i] = compute(*a_at(i).polygon, *b_at(i).polygon, request.options);
+                outputs[i] = compute_inputs(a_at(i), b_at(i), request.options);
               } catch (...) {
                 errors[i] = std::current_exception();
               }
@@ -92,7 +94,7 @@ void bind_batch(py::module_& m) {
         py::list out;
         for (std::size_t i = 0; i < n; ++i) {
           if (outputs[i]) {
-            out.append(py::cast(Result(a_at(i).polygon, b_at(i).polygon, request, std::move(*outputs[i]))));
+            out.append(py::cast(Result(a_at(i), b_at(i), request, std::move(*outputs[i]))));
           } else {
             const PairError e = error_of(errors[i]);
             out.append(py::make_tuple(e.kind, e.message));
@@ -101,7 +103,8 @@ void bind_batch(py::module_& m) {
         return out;
       },
       py::arg("op"), py::arg("a"), py::arg("b"), py::arg("kernel") = "", py::arg("regular") = true,
-      py::arg("area_exact") = false, py::arg("exact") = false, py::arg("threads") = 0);
+      py::arg("area_exact") = false, py::arg("exact") = false, py::arg("threads") = 0, py::arg("fill_rule") = "",
+      py::arg("grid") = "", py::arg("rounding") = "certified");
 }
 
 }  // namespace mk::python

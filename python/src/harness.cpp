@@ -173,8 +173,8 @@ void bind_harness(py::module_& m) {
       py::arg("generators"), py::arg("level") = "quick", py::arg("seeds") = 0, py::arg("base_seed") = 1);
   h.def("make_case", [](const py::dict& spec) {
     const Case c = make_case(spec_from(spec));
-    return py::make_tuple(InputPolygon{std::make_shared<const Polygon>(c.a)},
-                          InputPolygon{std::make_shared<const Polygon>(c.b)});
+    return py::make_tuple(InputPolygon(std::make_shared<const Polygon>(c.a)),
+                          InputPolygon(std::make_shared<const Polygon>(c.b)));
   });
   // Built-in generators' cases (specs from plan), in forked workers with a time limit per
   // run, as mkbool-experiment runs them; or in this process when isolate is false.

@@ -10,6 +10,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "arithmetic/snap_grid.hpp"
 #include "module.hpp"
 
 namespace mk::python {
@@ -67,7 +68,12 @@ InputPolygon with_type(const InputPolygon& p, const py::object& type) {
   if (t == p.polygon->type) return p;
   auto copy = std::make_shared<Polygon>(*p.polygon);
   copy->type = t;
-  return {std::move(copy)};
+  std::shared_ptr<ExactPolygon> exact;
+  if (p.exact) {
+    exact = std::make_shared<ExactPolygon>(*p.exact);
+    exact->type = t;
+  }
+  return InputPolygon(std::move(copy), std::move(exact));
 }
 
 }  // namespace
@@ -94,7 +100,16 @@ std::string kernel_failure_message(const KernelFailure& e) {
 
 std::string type_name(PolygonType t) { return t == PolygonType::island ? "island" : "hole"; }
 
-BooleanOptions make_options(Operation op, const std::string& kernel, bool regular, bool area_exact, bool exact) {
+std::optional<FillRule> fill_rule_named(const std::string& name) {
+  if (name.empty()) return std::nullopt;
+  for (const FillRule r : {FillRule::evenodd, FillRule::nonzero, FillRule::positive, FillRule::negative, FillRule::union_}) {
+    if (name == fill_rule_name(r)) return r;
+  }
+  throw std::invalid_argument("unknown fill rule '" + name + "' (evenodd, nonzero, positive, negative or union)");
+}
+
+BooleanOptions make_options(Operation op, const std::string& kernel, bool regular, bool area_exact, bool exact,
+                            const std::string& fill_rule, const std::string& grid, const std::string& rounding) {
   if (!kernel.empty()) {
     bool known = false;
     std::string names;
@@ -111,12 +126,42 @@ BooleanOptions make_options(Operation op, const std::string& kernel, bool regula
   o.area = true;
   o.area_exact = area_exact;
   o.exact_coordinates = exact;
+  o.fill_rule = fill_rule_named(fill_rule);
+  if (o.fill_rule && !regular) {
+    throw std::invalid_argument("fill_rule= gives regular results only (regular=False is the closed-set operation of "
+                                "the paper's domain, without a fill rule)");
+  }
+  if (rounding == "certified") {
+    o.rounding = RoundingMode::certified;
+  } else if (rounding == "nearest") {
+    o.rounding = RoundingMode::nearest;
+  } else {
+    throw std::invalid_argument("unknown rounding '" + rounding + "' (certified or nearest)");
+  }
+  if (!grid.empty()) {
+    if (o.rounding == RoundingMode::nearest) {
+      throw std::invalid_argument("grid_size= snaps the result, which rounding='nearest' does not");
+    }
+    (void)SnapGrid::parse(grid);  // its message before any work (the N-ary operations parse it last)
+    o.grid = grid;
+  }
   return o;
 }
 
-BooleanOutput run_compute(const Polygon& a, const Polygon& b, const BooleanOptions& options) {
+BooleanOutput compute_inputs(const InputPolygon& a, const InputPolygon& b, const BooleanOptions& options) {
+  if (!a.exact && !b.exact) return compute(*a.polygon, *b.polygon, options);
+  if (options.fill_rule) {
+    // mk::compute over ExactPolygon would run the paper's operation without the rule.
+    throw std::invalid_argument(std::string("fill rules read coordinates that are doubles; ") + (a.exact ? "A" : "B") +
+                                " has coordinates that are not (Fractions, or an exact result): give its rounded "
+                                "form (a result's .wkb) to read it by a fill rule");
+  }
+  return compute(a.exact ? *a.exact : exact_polygon(*a.polygon), b.exact ? *b.exact : exact_polygon(*b.polygon), options);
+}
+
+BooleanOutput run_compute(const InputPolygon& a, const InputPolygon& b, const BooleanOptions& options) {
   py::gil_scoped_release release;
-  return compute(a, b, options);
+  return compute_inputs(a, b, options);
 }
 
 }  // namespace mk::python
@@ -142,20 +187,23 @@ PYBIND11_MODULE(_mkbool, m) {
   bind_result(m);
   bind_batch(m);
   bind_harness(m);
+  bind_fill(m);
 
   m.def(
       "compute",
       [](const std::string& op, const InputPolygon& a, const InputPolygon& b, const std::string& kernel, bool regular,
-         const py::object& a_type, const py::object& b_type, bool area_exact, bool exact) {
-        Request request{operation_named(op), {}};
-        request.options = make_options(request.op, kernel, regular, area_exact, exact);
+         const py::object& a_type, const py::object& b_type, bool area_exact, bool exact, const std::string& fill_rule,
+         const std::string& grid, const std::string& rounding) {
+        Request request{operation_named(op), {}, {}};
+        request.name = std::string(operation_name(request.op));
+        request.options = make_options(request.op, kernel, regular, area_exact, exact, fill_rule, grid, rounding);
         const InputPolygon ta = with_type(a, a_type), tb = with_type(b, b_type);
-        BooleanOutput out = run_compute(*ta.polygon, *tb.polygon, request.options);
-        return Result(ta.polygon, tb.polygon, request, std::move(out));
+        BooleanOutput out = run_compute(ta, tb, request.options);
+        return Result(ta, tb, request, std::move(out));
       },
       py::arg("op"), py::arg("a"), py::arg("b"), py::arg("kernel") = "", py::arg("regular") = true,
       py::arg("a_type") = py::none(), py::arg("b_type") = py::none(), py::arg("area_exact") = false,
-      py::arg("exact") = false);
+      py::arg("exact") = false, py::arg("fill_rule") = "", py::arg("grid") = "", py::arg("rounding") = "certified");
   m.def("with_type", &with_type, py::arg("polygon"), py::arg("type"));
   // For bench/python_speed.py: the C++ call alone (mk::compute on converted inputs, with
   // the module's default options), timed in C++ `repeats` times; nanoseconds per call.

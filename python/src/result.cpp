@@ -28,7 +28,7 @@ namespace {
 void require_bounded(const Result& r, const char* format) {
   if (!r.output().unbounded) return;
   const Request& q = r.request();
-  throw OutputError(std::string("the result of ") + std::string(operation_name(q.op)) + " of A (" +
+  throw OutputError(std::string("the result of ") + q.name + " of A (" +
                     type_name(r.a()->type) + ") and B (" + type_name(r.b()->type) +
                     ") is unbounded (hole type), which " + format +
                     " cannot express; use .rings and .types, or .json (native JSON)");
@@ -59,6 +59,24 @@ py::tuple ratio(const std::string& text) {
   return py::make_tuple(python_int(q.get_num()), python_int(q.get_den()));
 }
 
+// How the written coordinates were obtained, as the command's --stats "rounding" object
+// (plus rounds and failure).
+py::dict rounding_dict(const RoundingReport& r) {
+  py::dict d;
+  d["mode"] = r.mode == RoundingMode::certified ? "certified" : "nearest";
+  d["snapped"] = r.snapped;
+  d["grid"] = r.snapped ? py::object(py::str(r.grid)) : py::object(py::none());
+  d["user_grid"] = r.user_grid;
+  d["regridded"] = r.regridded;
+  d["max_displacement"] = r.max_displacement ? py::object(py::float_(*r.max_displacement)) : py::object(py::none());
+  d["hot_pixels"] = r.hot_pixels;
+  d["incidences"] = r.incidences;
+  d["rounds"] = r.rounds;
+  d["valid"] = r.valid;
+  d["failure"] = r.failure.empty() ? py::object(py::none()) : py::object(py::str(r.failure));
+  return d;
+}
+
 py::dict stats_dict(Result& r) {
   const BooleanStats& s = r.stats();
   py::dict d;
@@ -71,13 +89,17 @@ py::dict stats_dict(Result& r) {
   d["area"] = s.area ? py::object(py::float_(*s.area)) : py::object(py::none());
   d["area_beyond_double"] = s.area_beyond_double;
   d["area_exact"] = s.area_exact ? py::object(py::str(*s.area_exact)) : py::object(py::none());
+  d["rounding"] = rounding_dict(r.output().rounding);
   return d;
 }
 
 }  // namespace
 
-Result::Result(std::shared_ptr<const Polygon> a, std::shared_ptr<const Polygon> b, Request request, BooleanOutput out)
-    : a_(std::move(a)), b_(std::move(b)), request_(std::move(request)), out_(std::move(out)) {
+Result::Result(InputPolygon a, InputPolygon b, Request request, BooleanOutput out)
+    : Result(a, b, std::move(request), std::move(out), [a, b](const BooleanOptions& o) { return compute_inputs(a, b, o); }) {}
+
+Result::Result(InputPolygon a, InputPolygon b, Request request, BooleanOutput out, Rerun rerun)
+    : a_(std::move(a)), b_(std::move(b)), request_(std::move(request)), out_(std::move(out)), rerun_(std::move(rerun)) {
   if (request_.options.exact_coordinates) {
     exact_.emplace();
     for (const auto& c : out_.output.irreducible) exact_->push_back(c.exact);
@@ -89,7 +111,42 @@ BooleanOutput Result::recompute(bool area_exact, bool exact_coordinates) const {
   o.area = false;
   o.area_exact = area_exact;
   o.exact_coordinates = exact_coordinates;
-  return run_compute(*a_, *b_, o);
+  py::gil_scoped_release release;
+  return rerun_(o);
+}
+
+InputPolygon input_from_result(Result& r) {
+  const Output& o = r.output();
+  if (is_exact_kernel(r.stats().kernel) && o.dangling_edges.empty() && o.isolated_points.empty()) {
+    // The exact region: every cycle of 3+ vertices, nesting by parity (mk::exact_result).
+    const auto& exact = r.exact_coordinates();
+    ExactPolygon p;
+    p.type = o.unbounded ? PolygonType::hole : PolygonType::island;
+    for (std::size_t i = 0; i < o.irreducible.size(); ++i) {
+      if (o.irreducible[i].vertices.size() < 3) continue;
+      auto& ring = p.rings.emplace_back();
+      for (std::size_t k = 0; k + 1 < exact[i].size(); k += 2) {
+        RationalPoint q;
+        if (q.x.set_str(exact[i][k], 10) != 0 || q.y.set_str(exact[i][k + 1], 10) != 0) {
+          throw std::runtime_error("not a rational: " + exact[i][k] + ", " + exact[i][k + 1]);
+        }
+        q.x.canonicalize();
+        q.y.canonicalize();
+        ring.push_back(std::move(q));
+      }
+    }
+    return input_from_exact(std::move(p));
+  }
+  // Inexact kernels and non-regular results: the rounded result. Bounded: its OGC polygons;
+  // unbounded: every area cycle with the hole type (its region is the closure of the outside
+  // of those cycles' finite area region).
+  if (!o.unbounded) return InputPolygon(std::make_shared<const Polygon>(to_polygon(o.polygons)));
+  Polygon p;
+  p.type = PolygonType::hole;
+  for (const auto& c : o.irreducible) {
+    if (c.vertices.size() >= 3) p.rings.push_back(c.vertices);
+  }
+  return InputPolygon(std::make_shared<const Polygon>(std::move(p)));
 }
 
 const std::string& Result::area_exact() {
@@ -153,7 +210,7 @@ py::list Result::rings() {
 
 void bind_result(py::module_& m) {
   py::class_<Result>(m, "Result", "The result of one Boolean operation.")
-      .def_property_readonly("op", [](const Result& r) { return std::string(operation_name(r.request().op)); })
+      .def_property_readonly("op", [](const Result& r) { return r.request().name; })
       .def_property_readonly("kernel", [](const Result& r) { return r.stats().kernel; })
       .def_property_readonly("regular", [](const Result& r) { return r.request().options.regular; })
       .def_property_readonly("unbounded", [](const Result& r) { return r.output().unbounded; })
@@ -219,7 +276,18 @@ void bind_result(py::module_& m) {
       })
       .def_property_readonly("isolated_points", [](const Result& r) { return ring_array(r.output().isolated_points); })
       .def_property_readonly("stats", &stats_dict)
-      .def_property_readonly("inputs", [](const Result& r) { return py::make_tuple(InputPolygon{r.a()}, InputPolygon{r.b()}); })
+      .def_property_readonly("rounding", [](const Result& r) { return rounding_dict(r.output().rounding); })
+      .def_property_readonly("fill_rule", [](const Result& r) {
+        const auto& rule = r.request().options.fill_rule;
+        return rule ? py::object(py::str(std::string(fill_rule_name(*rule)))) : py::object(py::none());
+      })
+      .def_property_readonly("grid", [](const Result& r) {
+        const std::string& g = r.request().options.grid;
+        return g.empty() ? py::object(py::none()) : py::object(py::str(g));
+      })
+      .def("exact_polygon", &input_from_result,
+           "The result as an input polygon, exactly (exact kernels, regular results); see input_from_result.")
+      .def_property_readonly("inputs", [](const Result& r) { return py::make_tuple(r.input_a(), r.input_b()); })
       .def_property_readonly("is_empty", [](const Result& r) {
         const Output& o = r.output();
         return !o.unbounded && o.irreducible.empty();

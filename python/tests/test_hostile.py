@@ -19,7 +19,15 @@ HOSTILE = [
     ("mkbool.union(np.array([[0, 0], [1, np.nan], [0, 1]]), SQ)", "InvalidInput", "y coordinate is not finite"),
     ("mkbool.union([(0, 0), (np.inf, 0), (0, 1)], SQ)", "InvalidInput", "x coordinate is not finite"),
     ("mkbool.union([(0, 0), (1e400, 0), (0, 1)], SQ)", "InvalidInput", "not finite"),
-    ("mkbool.union([(0, 0), (10**400, 0), (0, 1)], SQ)", "InvalidInput", "is not exactly a double"),
+    ("mkbool.union([(0, 0), (10**400, 0), (0, 1)], SQ)", "InvalidInput", "vertex 1: coordinate beyond the range of doubles"),
+    ("mkbool.union([(0, 0), (fractions.Fraction(1, 3), 0), (0, 10**100000)], SQ)", "InvalidInput",
+     "vertex 2: coordinate beyond the range of doubles"),
+    ("mkbool.union([(0, 0), (fractions.Fraction(1, 3**20000), 0), (0, 1)], SQ).area_exact == 1 or 1 / 0", "", "returned"),
+    ("mkbool.union([(0, 0), (decimal.Decimal('NaN'), 0), (0, 1)], SQ)", "InvalidInput", "x coordinate is not finite"),
+    ("mkbool.union([(0, 0), (fractions.Fraction(1, 3), decimal.Decimal('-Infinity')), (0, 1)], SQ)", "InvalidInput",
+     "y coordinate is not finite"),
+    ("mkbool.union([(0, 0), (fractions.Fraction(1, 3), 0), (0, 1)], SQ, kernel='interval')", "UsageError",
+     "takes doubles only"),
     ("mkbool.union('POLYGON((0 0,1 0,nan 1,0 0))', SQ)", "InvalidInput", "A (WKT): WKT line 1"),
     ("mkbool.union('POLYGON((0 0,1 0,1e999 1,0 0))', SQ)", "InvalidInput", "A (WKT): WKT line 1"),
     ("mkbool.union({'type': 'Polygon', 'coordinates': [[[0, 0], [1, 0], [float('nan'), 1], [0, 0]]]}, SQ)",
@@ -84,6 +92,24 @@ HOSTILE = [
     ("mkbool.union(SQ, SQ, a_type='hole').area_exact", "OutputError", "unbounded"),
     ("mkbool.union(SQ, SQ, kernel='double').area_exact", "UsageError", "exact kernels only"),
     ("mkbool.union(SQ, SQ, kernel='double').exact_rings", "UsageError", "exact kernels only"),
+    # fill rules, the N-ary operations, grids
+    ("mkbool.make_valid('POLYGON((0 0,1 0,nan 1,0 0))')", "InvalidInput", "geom (WKT): WKT line 1"),
+    ("mkbool.union([[(0, 0)], [(0, 0), (1, 1)]], SQ, fill_rule='nonzero').area == 1 or 1 / 0", "", "returned"),
+    ("mkbool.make_valid([(0, 0), (1e300, 0), (0, 1e300), (1e300, 1e300)]).stats['area_beyond_double'] or 1 / 0", "",
+     "returned"),
+    ("mkbool.make_valid([(0, 0), (1e300, 0), (0, 1e300), (1e300, 1e300)]).area_exact == fractions.Fraction(1e300)**2 / 2 or 1 / 0", "",
+     "returned"),
+    ("mkbool.union_all(np.zeros((0, 2)))", "InvalidInput", "geoms: ring 0: ring is empty"),
+    ("mkbool.union_all(5)", "InvalidInput", "union_all: cannot read polygons from int"),
+    ("mkbool.union_all([None])", "InvalidInput", "geoms[0]: cannot read a polygon from NoneType"),
+    ("mkbool.make_valid(b'\\x01\\x03\\x00\\x00\\x00\\xff\\xff\\xff\\xff')", "InvalidInput", "ring count 4294967295"),
+    ("mkbool.make_valid('POLYGON' + '(' * 200000 + ')' * 200000)", "InvalidInput", "geom (WKT)"),
+    ("mkbool.union_all(['MULTIPOLYGON(((0 0,1 0,0 1,0 0)))'] * 200, fill_rule='evenodd').is_empty or 1 / 0", "",
+     "returned"),
+    ("mkbool.union(SQ, SQ, grid_size=10**400)", "UsageError", "outside the range of doubles"),
+    ("mkbool.union(SQ, SQ, grid_size=5e-324)", "UsageError", "grid 2^-1074 is too fine"),
+    ("mkbool.union(SQ, SQ, grid_size=float('-inf'))", "UsageError", "not a finite number"),
+    ("mkbool.union(SQ, SQ, fill_rule='evenodd', rounding=None)", "UsageError", "unknown rounding None"),
     # the harness
     ("mkbool.harness.plan(['no-such-generator'])", "UsageError", "no-such-generator"),
     ("mkbool.harness.plan(['rotated'], level='huge')", "UsageError", "unknown sweep level 'huge'"),
@@ -105,7 +131,7 @@ HOSTILE = [
 ]
 
 CHILD = textwrap.dedent("""
-    import sys, traceback
+    import decimal, fractions, sys, traceback
     import numpy as np
     import shapely.geometry as sg
     import mkbool

@@ -90,14 +90,16 @@ def test_unbounded_results():
     with pytest.raises(mkbool.OutputError, match="infinite"):
         r.area_exact
     assert "hole" in r.types and json.loads(r.json)["unbounded"] is True
-    # As input, the result is its rounded cycles with the hole type (exact chaining is
-    # issue 12's): a bounded window then has the window's area less the area those cycles
-    # enclose, computed here by shoelace on the same doubles.
-    enclosed = sum((abs(shoelace([tuple(p) for p in ring])) / 2) * (1 if t == "hole" else -1)
-                   for ring, t in zip(r.rings, r.types) if len(ring) >= 3)
-    assert enclosed > 0 and abs(float(enclosed) - float(mkbool.difference(A, B).area_exact)) < 1e-12
-    bounded = mkbool.intersection(r, "POLYGON((-100 -100,100 -100,100 100,-100 100,-100 -100))")
-    assert bounded.area_exact == 200 * 200 - enclosed
+    # As input, the result is itself, exactly (hole type, its cycles' exact coordinates): a
+    # bounded window then has the window's area less the area of A - B, which those cycles
+    # enclose; their rounded vertices enclose a slightly different area.
+    diff = mkbool.difference(A, B).area_exact
+    rounded = sum((abs(shoelace([tuple(p) for p in ring])) / 2) * (1 if t == "hole" else -1)
+                  for ring, t in zip(r.rings, r.types) if len(ring) >= 3)
+    assert rounded != diff and abs(float(rounded) - float(diff)) < 1e-12
+    window = "POLYGON((-100 -100,100 -100,100 100,-100 100,-100 -100))"
+    assert mkbool.intersection(r, window).area_exact == 200 * 200 - diff
+    assert r.exact_polygon().type == "hole" and r.exact_polygon().is_exact
 
 
 def test_every_kernel_runs_and_the_exact_ones_agree():
