@@ -1,6 +1,6 @@
-// Failure artefacts: regression case files (regression_case.cpp) and SVG pictures, each
-// made in a forked child with a time limit (the failing kernel runs again to draw its
-// output). [MK89 §3.3]
+// Failure artefacts: regression case files (regression_case.cpp) and SVG pictures, and
+// pictures of snapped results, each made in a forked child with a time limit (the kernel
+// runs again to draw its output). [MK89 §3.3] [Ho99]
 // Preconditions: see artefacts.hpp.
 #include "experiments/artefacts.hpp"
 
@@ -22,6 +22,7 @@
 #include "core/error.hpp"
 #include "experiments/generators.hpp"
 #include "experiments/peer_verdict.hpp"
+#include "experiments/snapping_pictures.hpp"
 #include "experiments/verdict.hpp"
 
 namespace mk::experiments {
@@ -34,6 +35,22 @@ Operation parse_operation(const std::string& name) {
     if (operation_name(op) == name) return op;
   }
   throw std::invalid_argument("unknown operation '" + name + "' (intersection, union, difference, xor)");
+}
+
+std::string_view artefact_kind_name(Artefact::Kind kind) {
+  switch (kind) {
+    case Artefact::Kind::regression_case: return "regression_case";
+    case Artefact::Kind::picture: return "picture";
+    case Artefact::Kind::snapping: return "snapping";
+  }
+  return "?";
+}
+
+std::optional<Artefact::Kind> parse_artefact_kind(std::string_view name) {
+  for (const auto k : {Artefact::Kind::regression_case, Artefact::Kind::picture, Artefact::Kind::snapping}) {
+    if (artefact_kind_name(k) == name) return k;
+  }
+  return std::nullopt;
 }
 
 namespace {
@@ -132,6 +149,10 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
       if (seen.insert(r->case_index).second) todo.push_back({Artefact::Kind::picture, r});
     }
   }
+  // Results that certified rounding snapped: the nearest doubles beside the snapped output.
+  for (const ResultRow* r : snapped_runs_to_picture(rows, options.snapping_per_generator)) {
+    todo.push_back({Artefact::Kind::snapping, r});
+  }
   std::vector<Artefact> out;
   std::set<std::string> used_names;
   for (const auto& [kind, r] : todo) {
@@ -142,6 +163,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
       if (!used_names.insert(stem).second) stem += run_suffix(*r);
       used_names.insert(stem);
       art.path = "regression/" + stem + ".wkt";
+    } else if (kind == Artefact::Kind::snapping) {
+      art.path = "pictures/snapping/" + spec.stem() + run_suffix(*r) + ".svg";
     } else {
       art.path = "pictures/" + r->kernel + "/" + spec.stem() + run_suffix(*r) + ".svg";
     }
@@ -157,6 +180,10 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
                                                      "kernel=" + r->kernel + " verdict=" +
                                                          std::string(verdict_name(r->verdict)) + " " + r->message,
                                                      kKeepAsTest}));
+            return;
+          }
+          if (kind == Artefact::Kind::snapping) {
+            write_file(target, snapping_picture(c.a, c.b, op, r->regular, r->kernel));
             return;
           }
           const ExactResult ref = exact_reference(c.a, c.b, op, r->regular, false);
@@ -221,8 +248,7 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
   std::ofstream list(fs::path(dir) / "artefacts.csv");
   list << "kind,path," << csv_header() << "\n";
   for (const auto& a : out) {
-    list << (a.kind == Artefact::Kind::picture ? "picture" : "regression_case") << "," << a.path << ","
-         << to_csv(a.row) << "\n";
+    list << artefact_kind_name(a.kind) << "," << a.path << "," << to_csv(a.row) << "\n";
   }
   return out;
 }
@@ -247,7 +273,9 @@ std::vector<Artefact> read_artefacts(const std::string& dir) {
       const auto c2 = line.find(',', c1 + 1);
       if (c1 == std::string::npos || c2 == std::string::npos) continue;
       Artefact a;
-      a.kind = line.substr(0, c1) == "picture" ? Artefact::Kind::picture : Artefact::Kind::regression_case;
+      const auto kind = parse_artefact_kind(std::string_view(line).substr(0, c1));
+      if (!kind) throw std::runtime_error(f.string() + ": unknown artefact kind '" + line.substr(0, c1) + "'");
+      a.kind = *kind;
       a.path = line.substr(c1 + 1, c2 - c1 - 1);
       a.row = parse_csv_row(line.substr(c2 + 1));
       out.push_back(std::move(a));

@@ -53,7 +53,7 @@ void table(std::ostringstream& md, const std::string& label, const std::map<std:
 
 }  // namespace
 
-std::string rounding_report(const std::vector<ResultRow>& rows) {
+std::string rounding_report(const std::vector<ResultRow>& rows, const std::vector<Artefact>& artefacts) {
   std::map<std::string, Tally> by_kernel, by_generator;
   for (const auto& r : rows) {
     if (!r.nearest_valid || !r.certified_valid) continue;
@@ -73,6 +73,23 @@ std::string rounding_report(const std::vector<ResultRow>& rows) {
   table(md, "kernel", by_kernel);
   md << "Per generator, kernel `exact`:\n\n";
   table(md, "generator", by_generator);
+  std::vector<const Artefact*> pictures;
+  for (const auto& a : artefacts) {
+    if (a.kind == Artefact::Kind::snapping) pictures.push_back(&a);
+  }
+  if (!pictures.empty()) {
+    md << "Before and after snapping (kernel `exact`, the smallest snapped cases of each generator): the result with "
+          "every vertex rounded to its nearest double and why that is not a valid polygon, beside the certified "
+          "output with its grid and largest vertex move, and a zoom on the first vertex where they differ (grid "
+          "points grey).\n\n"
+       << "| generator | variant | params | seed | op | picture |\n|---|---|---|---:|---|---|\n";
+    for (const Artefact* a : pictures) {
+      const ResultRow& r = a->row;
+      md << "| " << r.generator << " | " << r.variant << " | " << r.params << " | " << r.seed << " | " << r.op
+         << (r.regular ? "" : " (non-regular)") << " | [picture](" << a->path << ") |\n";
+    }
+    md << "\n";
+  }
   return md.str();
 }
 
