@@ -75,8 +75,13 @@ std::vector<const ResultRow*> snapped_runs_to_picture(const std::vector<ResultRo
   }
   std::vector<const ResultRow*> out;
   for (auto& [generator, list] : by_generator) {
-    std::stable_sort(list.begin(), list.end(), [](const ResultRow* x, const ResultRow* y) {
-      return x->size != y->size ? x->size < y->size : x->case_index < y->case_index;
+    // Smallest cases first; at equal size, runs where a vertex moved (rather than a sliver
+    // snapped away whole), the largest move first.
+    const auto moved = [](const ResultRow* r) { return r->snap_displacement.value_or(0); };
+    std::stable_sort(list.begin(), list.end(), [&](const ResultRow* x, const ResultRow* y) {
+      if (x->size != y->size) return x->size < y->size;
+      if (moved(x) != moved(y)) return moved(x) > moved(y);
+      return x->case_index < y->case_index;
     });
     std::set<std::uint64_t> cases;  // one picture per case
     for (const ResultRow* r : list) {

@@ -15,8 +15,8 @@
 namespace mk::experiments {
 
 // Runs of kernel `exact` whose output certified rounding snapped: for each generator the
-// `per_generator` smallest cases (input size, then plan order), one run per case (its
-// first snapped run in CSV order).
+// `per_generator` smallest cases (input size; at equal size those with the largest vertex
+// move, then plan order), one run per case (the one with the largest move).
 std::vector<const ResultRow*> snapped_runs_to_picture(const std::vector<ResultRow>& rows, std::size_t per_generator);
 
 // The SVG: left, A, B and the result rounded to the nearest doubles (titled with the exact

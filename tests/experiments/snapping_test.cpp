@@ -100,12 +100,15 @@ TEST(Snapping, WrittenOutputIsValidForGeosAndSnappedResultsArePictured) {
     EXPECT_NE(svg.find("zoom: "), std::string::npos) << a->path;           // moves are sub-ulp: zoomed
     EXPECT_NE(svg.find("grid points grey"), std::string::npos) << a->path;
   }
-  // Smallest cases first within each generator.
+  // Smallest cases first within each generator (at equal size, the largest moves).
   for (const Artefact* a : pictures) {
     for (const auto& r : rows) {
       if (r.generator == a->row.generator && r.certified_snapped == true &&
           std::none_of(pictures.begin(), pictures.end(), [&](const Artefact* p) { return p->row.case_index == r.case_index; })) {
         EXPECT_GE(r.size, a->row.size) << "case " << r.case_index << " is smaller than pictured " << a->path;
+        if (r.size == a->row.size) {
+          EXPECT_LE(r.snap_displacement, a->row.snap_displacement) << "case " << r.case_index << " moved more than " << a->path;
+        }
       }
     }
   }
