@@ -1,6 +1,6 @@
-// Failure artefacts: regression case files and SVG pictures, each made in a forked child
-// with a time limit (the failing kernel runs again to draw its output).
-// [MK89 §3.3] [MK89 §2.2] (rings nest: shells and holes for WKT)
+// Failure artefacts: regression case files (regression_case.cpp) and SVG pictures, and
+// pictures of snapped results, each made in a forked child with a time limit (the kernel
+// runs again to draw its output). [MK89 §3.3] [Ho99]
 // Preconditions: see artefacts.hpp.
 #include "experiments/artefacts.hpp"
 
@@ -9,14 +9,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <filesystem>
 #include <functional>
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -24,10 +22,8 @@
 #include "core/error.hpp"
 #include "experiments/generators.hpp"
 #include "experiments/peer_verdict.hpp"
+#include "experiments/snapping_pictures.hpp"
 #include "experiments/verdict.hpp"
-#include "io/native_json.hpp"
-#include "io/svg.hpp"
-#include "io/wkt.hpp"
 
 namespace mk::experiments {
 
@@ -41,90 +37,23 @@ Operation parse_operation(const std::string& name) {
   throw std::invalid_argument("unknown operation '" + name + "' (intersection, union, difference, xor)");
 }
 
-namespace {
-
-std::string number(double v) {
-  char buf[64];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+std::string_view artefact_kind_name(Artefact::Kind kind) {
+  switch (kind) {
+    case Artefact::Kind::regression_case: return "regression_case";
+    case Artefact::Kind::picture: return "picture";
+    case Artefact::Kind::snapping: return "snapping";
+  }
+  return "?";
 }
 
-// Whether ring r lies inside ring s (decided at a vertex of r not on s; rings of a valid
-// polygon do not cross). Empty when every vertex of r lies on s.
-std::optional<bool> is_ring_inside(const Ring& r, const Ring& s) {
-  for (const Point& p : r) {
-    const mpq_class px(p.x), py(p.y);
-    bool on = false, in = false;
-    for (std::size_t i = 0; i < s.size() && !on; ++i) {
-      const Point& a = s[i];
-      const Point& b = s[(i + 1) % s.size()];
-      const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y);
-      const mpq_class cross = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-      if (cross == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-          p.y <= std::max(a.y, b.y)) {
-        on = true;
-      } else if ((ay > py) != (by > py) && ((by > ay) ? cross > 0 : cross < 0)) {
-        in = !in;
-      }
-    }
-    if (!on) return in;
+std::optional<Artefact::Kind> parse_artefact_kind(std::string_view name) {
+  for (const auto k : {Artefact::Kind::regression_case, Artefact::Kind::picture, Artefact::Kind::snapping}) {
+    if (artefact_kind_name(k) == name) return k;
   }
   return std::nullopt;
 }
 
-// WKT when the polygon is island-type, every ring has 3+ points, and its rings come as
-// shells each followed by the holes directly inside it; empty otherwise.
-std::string as_wkt(const Polygon& p) {
-  if (p.type != PolygonType::island || p.rings.empty()) return {};
-  const std::size_t n = p.rings.size();
-  std::vector<int> depth(n, 0);
-  std::vector<int> parent(n, -1);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (p.rings[i].size() < 3) return {};
-    for (std::size_t j = 0; j < n; ++j) {
-      if (i == j) continue;
-      const auto in = is_ring_inside(p.rings[i], p.rings[j]);
-      if (!in) return {};
-      if (*in) ++depth[i];
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (depth[i] % 2 == 0) continue;
-    for (std::size_t j = 0; j < n; ++j) {
-      if (j != i && depth[j] == depth[i] - 1 && is_ring_inside(p.rings[i], p.rings[j]).value_or(false)) {
-        parent[i] = static_cast<int>(j);
-      }
-    }
-  }
-  std::string parts;
-  std::size_t shells = 0;
-  for (std::size_t i = 0; i < n;) {
-    if (depth[i] % 2 != 0) return {};  // a hole not right after its shell
-    std::string part = "(";
-    std::size_t j = i;
-    do {
-      part += j == i ? "(" : ", (";
-      for (const Point& q : p.rings[j]) part += number(q.x) + " " + number(q.y) + ", ";
-      part += number(p.rings[j][0].x) + " " + number(p.rings[j][0].y) + ")";
-      ++j;
-    } while (j < n && depth[j] % 2 != 0 && parent[j] == static_cast<int>(i));
-    parts += (shells++ > 0 ? ", " : "") + part + ")";
-    i = j;
-  }
-  return shells == 1 ? "POLYGON " + parts : "MULTIPOLYGON (" + parts + ")";
-}
-
-std::string one_line(std::string s) {
-  for (char& c : s) {
-    if (c == '\n') c = ' ';
-  }
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
-
-Polygon read_polygon_line(const std::string& line) {
-  if (!line.empty() && line[0] == '{') return read_native_json(line);
-  return to_polygon(read_wkt(line));
-}
+namespace {
 
 // Runs f in a forked child, killing it after `timeout` seconds. True when it finished.
 bool run_isolated(const std::function<void()>& f, double timeout) {
@@ -183,41 +112,6 @@ int severity(const ResultRow& r) {
 
 }  // namespace
 
-std::string regression_case_text(const Polygon& a, const Polygon& b, Operation op, bool regular,
-                                 const std::vector<std::string>& comments) {
-  std::string out;
-  for (const Polygon* p : {&a, &b}) {
-    std::string line = as_wkt(*p);
-    if (line.empty()) line = one_line(write_native_json(*p));
-    out += line + "\n";
-  }
-  out += std::string(operation_name(op)) + "\n" + (regular ? "regular" : "nonregular") + "\n";
-  for (const auto& c : comments) out += "# " + c + "\n";
-  return out;
-}
-
-RegressionCase read_regression_case(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line[0] != '#') lines.push_back(line);
-  }
-  if (lines.size() < 4) throw InvalidInput("regression case: expected 4 lines (A, B, operation, regular)");
-  RegressionCase c;
-  c.a = read_polygon_line(lines[0]);
-  c.b = read_polygon_line(lines[1]);
-  try {
-    c.op = parse_operation(lines[2]);
-  } catch (const std::invalid_argument& e) {
-    throw InvalidInput(std::string("regression case line 3: ") + e.what());
-  }
-  if (lines[3] != "regular" && lines[3] != "nonregular") {
-    throw InvalidInput("regression case line 4: expected 'regular' or 'nonregular'");
-  }
-  c.regular = lines[3] == "regular";
-  return c;
-}
-
 std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const std::string& dir,
                                       const ArtefactOptions& options) {
   // Exact kernels (and the reference itself): every failure, as a regression case.
@@ -255,6 +149,10 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
       if (seen.insert(r->case_index).second) todo.push_back({Artefact::Kind::picture, r});
     }
   }
+  // Results that certified rounding snapped: the nearest doubles beside the snapped output.
+  for (const ResultRow* r : snapped_runs_to_picture(rows, options.snapping_per_generator)) {
+    todo.push_back({Artefact::Kind::snapping, r});
+  }
   std::vector<Artefact> out;
   std::set<std::string> used_names;
   for (const auto& [kind, r] : todo) {
@@ -265,6 +163,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
       if (!used_names.insert(stem).second) stem += run_suffix(*r);
       used_names.insert(stem);
       art.path = "regression/" + stem + ".wkt";
+    } else if (kind == Artefact::Kind::snapping) {
+      art.path = "pictures/snapping/" + spec.stem() + run_suffix(*r) + ".svg";
     } else {
       art.path = "pictures/" + r->kernel + "/" + spec.stem() + run_suffix(*r) + ".svg";
     }
@@ -280,6 +180,10 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
                                                      "kernel=" + r->kernel + " verdict=" +
                                                          std::string(verdict_name(r->verdict)) + " " + r->message,
                                                      kKeepAsTest}));
+            return;
+          }
+          if (kind == Artefact::Kind::snapping) {
+            write_file(target, snapping_picture(c.a, c.b, op, r->regular, r->kernel));
             return;
           }
           const ExactResult ref = exact_reference(c.a, c.b, op, r->regular, false);
@@ -344,8 +248,7 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
   std::ofstream list(fs::path(dir) / "artefacts.csv");
   list << "kind,path," << csv_header() << "\n";
   for (const auto& a : out) {
-    list << (a.kind == Artefact::Kind::picture ? "picture" : "regression_case") << "," << a.path << ","
-         << to_csv(a.row) << "\n";
+    list << artefact_kind_name(a.kind) << "," << a.path << "," << to_csv(a.row) << "\n";
   }
   return out;
 }
@@ -370,7 +273,9 @@ std::vector<Artefact> read_artefacts(const std::string& dir) {
       const auto c2 = line.find(',', c1 + 1);
       if (c1 == std::string::npos || c2 == std::string::npos) continue;
       Artefact a;
-      a.kind = line.substr(0, c1) == "picture" ? Artefact::Kind::picture : Artefact::Kind::regression_case;
+      const auto kind = parse_artefact_kind(std::string_view(line).substr(0, c1));
+      if (!kind) throw std::runtime_error(f.string() + ": unknown artefact kind '" + line.substr(0, c1) + "'");
+      a.kind = *kind;
       a.path = line.substr(c1 + 1, c2 - c1 - 1);
       a.row = parse_csv_row(line.substr(c2 + 1));
       out.push_back(std::move(a));

@@ -1,7 +1,8 @@
 // Failure artefacts of a sweep: every failure of an exact kernel as a ready regression case
 // file (tests/regression/cases/<generator>_<seed>.wkt format), and SVG pictures (A, B, the
-// exact result, the kernel's result) of the smallest failing cases of each kernel.
-// [MK89 §3.3] (exact kernels never fail: each failure is a bug to keep as a test)
+// exact result, the kernel's result) of the smallest failing cases of each kernel; and
+// pictures of results that certified rounding snapped (snapping_pictures.hpp).
+// [MK89 §3.3] (exact kernels never fail: each failure is a bug to keep as a test) [Ho99]
 // Preconditions: rows come from run_sweep over the same generators; the out directory is
 // writable.
 #pragma once
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/output.hpp"
@@ -39,18 +41,27 @@ RegressionCase read_regression_case(const std::string& text);
 
 
 struct Artefact {
-  enum class Kind { regression_case, picture } kind = Kind::picture;
+  // regression_case: a case file; picture: a failure picture; snapping: a result rounded to
+  // the nearest doubles beside its certified (snap-rounded) output.
+  enum class Kind { regression_case, picture, snapping } kind = Kind::picture;
   std::string path;  // relative to the output directory
   ResultRow row;     // the run it shows
 };
 
+// The kind's name in artefacts.csv ("regression_case", "picture", "snapping"), and back
+// (empty for an unknown name).
+std::string_view artefact_kind_name(Artefact::Kind kind);
+std::optional<Artefact::Kind> parse_artefact_kind(std::string_view name);
+
 struct ArtefactOptions {
   std::size_t pictures_per_group = 3;  // per (kernel, generator), smallest cases first
   double timeout_seconds = 60;         // per artefact, in a forked child
+  std::size_t snapping_per_generator = 3;  // snapped results of kernel `exact` per generator
 };
 
-// Picks the failures, regenerates their cases and writes DIR/regression/*.wkt and
-// DIR/pictures/<kernel>/*.svg; returns what it wrote (also listed in DIR/artefacts.csv).
+// Picks the failures and the snapped results, regenerates their cases and writes
+// DIR/regression/*.wkt, DIR/pictures/<kernel>/*.svg and DIR/pictures/snapping/*.svg;
+// returns what it wrote (also listed in DIR/artefacts.csv).
 std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const std::string& dir,
                                       const ArtefactOptions& options);
 

@@ -28,6 +28,7 @@
 #include "experiments/peers/peers.hpp"
 #include "experiments/report.hpp"
 #include "experiments/runner.hpp"
+#include "experiments/snapping_pictures.hpp"
 
 namespace fs = std::filesystem;
 using namespace mk::experiments;
@@ -201,9 +202,12 @@ int run_command(const RunArgs& a, const std::string& command_line) {
   if (!a.no_artefacts) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto arts = write_artefacts(rows, a.out, ArtefactOptions{3, std::min(60.0, o.timeout_seconds)});
-    n_art = arts.size();
+    const auto snapping = static_cast<std::size_t>(std::count_if(
+        arts.begin(), arts.end(), [](const Artefact& art) { return art.kind == Artefact::Kind::snapping; }));
+    n_art = arts.size() - snapping;
     if (!suffix.empty()) fs::rename(fs::path(a.out) / "artefacts.csv", fs::path(a.out) / ("artefacts" + suffix + ".csv"));
-    std::cerr << "mkbool-experiment: " << n_art << " failure artefacts (pictures, regression cases) in "
+    std::cerr << "mkbool-experiment: " << n_art << " failure artefacts (pictures, regression cases) and " << snapping
+              << " pictures of snapped results in "
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
     bool any_case = false;
     for (const auto& art : arts) {
@@ -329,6 +333,12 @@ int case_command(const CaseSpec& spec, const std::string& op_name, bool regular,
     const std::string svg = (fs::path(out) / (stem + "_" + std::string(k) + ".svg")).string();
     std::ofstream(svg) << failure_picture(c.a, c.b, ref.output, "exact " + op_name, output, title + verdict);
     std::cout << "  " << k << ": " << verdict << " -> " << svg << "\n";
+    if (k == "exact" && output && output->rounding.snapped) {
+      // Certified rounding snapped the result: the nearest doubles beside the snapped output.
+      const std::string snapped = (fs::path(out) / (stem + "_snapping.svg")).string();
+      std::ofstream(snapped) << snapping_picture(c.a, c.b, op, regular, std::string(k));
+      std::cout << "  " << k << ": snapped to grid " << output->rounding.grid << " -> " << snapped << "\n";
+    }
   }
   return 0;
 }
@@ -380,7 +390,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"certified", "nearest"}));
   run->add_option("--grid", ra.grid, "snap every result onto multiples of G (a positive decimal or fraction p/q, exact)")
       ->check(arguments::accepted_by([](const std::string& g) { (void)mk::SnapGrid::parse(g); }, "grid"));
-  run->add_flag("--no-artefacts", ra.no_artefacts, "skip failure pictures and regression cases");
+  run->add_flag("--no-artefacts", ra.no_artefacts, "skip failure pictures, regression cases and pictures of snapped results");
   run->add_flag("--no-report", ra.no_report, "skip the report");
   run->add_flag("--no-plots", ra.no_plots, "report without running the plot script");
   run->add_option("-o,--out", ra.out, "output directory")->required();

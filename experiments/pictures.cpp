@@ -117,10 +117,33 @@ std::vector<std::vector<Point>> rings_of(const Output& o) {
   return out;
 }
 
+// The grid's points inside the window as small grey crosses, when there are few enough
+// to tell apart (a snap rounding's pixel centres: its vertices lie on them).
+std::string grid_points(const Window& w, double spacing) {
+  if (!(spacing > 0) || !std::isfinite(spacing) || !(w.half_width / spacing <= 12)) return {};
+  const double x0 = std::ceil((w.centre.x - w.half_width) / spacing), y0 = std::ceil((w.centre.y - w.half_width) / spacing);
+  // Indices up to 25 past these are integers below 2^53, hence doubles.
+  if (!(std::abs(x0) + 26 < 0x1p53 && std::abs(y0) + 26 < 0x1p53)) return {};
+  std::string out;
+  for (int i = 0; i <= 25; ++i) {
+    for (int j = 0; j <= 25; ++j) {
+      // Integers below 2^53 times a power of two: the grid point is exact.
+      const Point g{(x0 + i) * spacing, (y0 + j) * spacing};
+      if (!std::isfinite(g.x) || !std::isfinite(g.y)) continue;
+      const auto [x, y] = local(w, g);
+      if (std::abs(x) > 1 || std::abs(y) > 1) continue;
+      const std::string cx = pixel(x, false), cy = pixel(y, true);
+      out += "<path d=\"M" + cx + " " + cy + "m-3 0h6m-3 -3v6\" stroke=\"#aaa\" stroke-width=\"1\"/>\n";
+    }
+  }
+  return out;
+}
+
 std::string zoom_panel(const Window& w, const Polygon& a, const Polygon& b, const Output& exact,
-                       const std::optional<Output>& kernel) {
+                       const std::optional<Output>& kernel, double grid) {
   std::string out = "<rect width=\"" + number(zoom_size) + "\" height=\"" + number(zoom_size) +
                     "\" fill=\"white\" stroke=\"#999\"/>\n";
+  out += grid_points(w, grid);
   out += outlines(w, a.rings, "#1f77b4", 1, "");
   out += outlines(w, b.rings, "#ff7f0e", 1, "");
   out += outlines(w, rings_of(exact), "#2ca02c", 4, "");
@@ -147,7 +170,7 @@ double distance_to(const Output& o, const Point& p) {
 
 }  // namespace
 
-std::optional<Window> difference_window(const Output& exact, const Output& kernel) {
+std::optional<Window> difference_window(const Output& exact, const Output& kernel, const ZoomOptions& options) {
   // Vertex counts, not sets: rounding can merge two exact vertices into one double.
   std::map<std::pair<double, double>, int> count;  // kernel's minus exact's
   double lo_x = std::numeric_limits<double>::infinity(), hi_x = -lo_x, lo_y = lo_x, hi_y = -lo_x;
@@ -169,17 +192,20 @@ std::optional<Window> difference_window(const Output& exact, const Output& kerne
       break;
     }
   }
-  if (!at || other->irreducible.empty()) return std::nullopt;
-  const double nearest = distance_to(*other, *at);
+  if (!at || (other->irreducible.empty() && !options.always)) return std::nullopt;
+  // A vertex of one output where the other has none (a ring that collapsed) is its own
+  // neighbourhood: the window's least width decides.
+  const double nearest = other->irreducible.empty() ? 0 : distance_to(*other, *at);
   const double scale = std::max({std::abs(at->x), std::abs(at->y), std::numeric_limits<double>::min()});
-  const double half = std::max(3 * nearest, 6 * (std::nextafter(scale, HUGE_VAL) - scale));
+  const double half = std::max({3 * nearest, 6 * (std::nextafter(scale, HUGE_VAL) - scale), options.min_half_width});
   const double extent = std::max(hi_x - lo_x, hi_y - lo_y);
-  if (std::isfinite(extent) && half > extent / 20) return std::nullopt;  // visible without zooming
+  if (!options.always && std::isfinite(extent) && half > extent / 20) return std::nullopt;  // visible without zooming
   return Window{*at, half};
 }
 
 std::string failure_picture(const Polygon& a, const Polygon& b, const Output& exact, const std::string& exact_title,
-                            const std::optional<Output>& kernel_output, const std::string& kernel_title) {
+                            const std::optional<Output>& kernel_output, const std::string& kernel_title,
+                            const ZoomOptions& zoom_options) {
   // Polygons with non-finite coordinates (an overflowed construction) cannot be drawn.
   std::optional<Output> kernel = kernel_output;
   if (kernel) {
@@ -196,7 +222,8 @@ std::string failure_picture(const Polygon& a, const Polygon& b, const Output& ex
   double w1 = 0, h1 = 0, w2 = 0, h2 = 0;
   const std::string left = panel(write_svg(a, b, exact), 0, 28, w1, h1);
   const std::string right = panel(write_svg(a, b, kernel.value_or(Output{})), w1 + 20, 28, w2, h2);
-  const std::optional<Window> zoom = kernel ? difference_window(exact, *kernel) : std::nullopt;
+  const std::optional<Window> zoom =
+      kernel ? difference_window(exact, *kernel, zoom_options) : std::nullopt;
   const double width = w1 + 20 + w2 + (zoom ? 20 + zoom_size : 0);
   const double height = std::max({h1, h2, zoom ? zoom_size + 40 : 0.0}) + 28;
   // Titles cut to their panel's width (about 7.5 pixels a character).
@@ -217,10 +244,12 @@ std::string failure_picture(const Polygon& a, const Polygon& b, const Output& ex
                   zoom->centre.y);
     out += text(x, buf, zoom_size + 200);
     out += "<svg x=\"" + number(x) + "\" y=\"28\" width=\"" + number(zoom_size) + "\" height=\"" + number(zoom_size) +
-           "\">\n" + zoom_panel(*zoom, a, b, exact, kernel) + "</svg>\n";
+           "\">\n" + zoom_panel(*zoom, a, b, exact, kernel, zoom_options.grid) + "</svg>\n";
     out += "<text x=\"" + number(x) + "\" y=\"" + number(zoom_size + 50) +
-           "\" font-family=\"sans-serif\" font-size=\"12\">A blue, B orange, exact result green, kernel result red "
-           "dashed</text>\n";
+           "\" font-family=\"sans-serif\" font-size=\"12\">" +
+           escape("A blue, B orange, " + zoom_options.left_name + " green, " + zoom_options.right_name + " red dashed" +
+                  (zoom_options.grid > 0 ? ", grid points grey" : "")) +
+           "</text>\n";
   }
   return out + "</svg>\n";
 }

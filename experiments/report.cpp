@@ -160,7 +160,7 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
   }
 
   md << library_report(rows);
-  md << rounding_report(rows);
+  md << rounding_report(rows, artefacts);
 
   std::set<std::uint64_t> inconsistent_cases;
   std::size_t inconsistent_runs = 0;
@@ -312,7 +312,12 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
   }
 
   md << "## Failure pictures and regression cases\n\n";
-  if (artefacts.empty()) {
+  // Pictures of snapped results are listed with the rounding tables above.
+  std::vector<const Artefact*> failure_artefacts;
+  for (const auto& a : artefacts) {
+    if (a.kind != Artefact::Kind::snapping) failure_artefacts.push_back(&a);
+  }
+  if (failure_artefacts.empty()) {
     md << "None: no failures, or the artefact step was skipped.\n\n";
   } else {
     md << "Every failure of an exact kernel (as a regression case file and a picture), and for each other kernel "
@@ -321,7 +326,7 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
           "result on the right, and a zoom on the first difference when it is too small to see.\n\n";
   }
   std::map<std::string, std::vector<const Artefact*>> by_kernel_art;
-  for (const auto& a : artefacts) by_kernel_art[a.row.kernel].push_back(&a);
+  for (const Artefact* a : failure_artefacts) by_kernel_art[a->row.kernel].push_back(a);
   for (const auto& k : kernels) {
     const auto it = by_kernel_art.find(k);
     if (it == by_kernel_art.end()) continue;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <map>
 #include <tuple>
@@ -15,6 +16,7 @@
 #include "experiments/generators.hpp"
 #include "experiments/ogc.hpp"
 #include "experiments/peer_verdict.hpp"
+#include "experiments/peers/peers.hpp"
 #include "experiments/runner.hpp"
 #include "experiments/verdict.hpp"
 
@@ -151,6 +153,23 @@ void run_peer_into(ResultRow& r, const std::string& peer, const Case& cs, const 
   }
 }
 
+// Whether GEOS's isValid is asked about the written polygons: every coordinate 0 or of
+// magnitude between 1e-200 and 1e200 (beyond, its orientation products underflow or
+// overflow, and its verdict is about its arithmetic, not the polygons).
+bool is_in_geos_range(const MultiPolygon& mp) {
+  const auto fine = [](const Ring& r) {
+    return std::all_of(r.begin(), r.end(), [](const Point& p) {
+      for (const double v : {std::abs(p.x), std::abs(p.y)}) {
+        if (v != 0 && !(v >= 1e-200 && v <= 1e200)) return false;
+      }
+      return true;
+    });
+  };
+  return std::all_of(mp.begin(), mp.end(), [&](const OgcPolygon& p) {
+    return fine(p.shell) && std::all_of(p.holes.begin(), p.holes.end(), fine);
+  });
+}
+
 bool runs_peers(const IndexedCase& c, std::size_t size, const RunOptions& o) {
   if (is_external_generator(c.spec.generator)) return true;
   return c.index % std::max<std::size_t>(1, o.peer_every) == 0 && (o.peer_max_size == 0 || size <= o.peer_max_size);
@@ -244,6 +263,8 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
       continue;
     }
     std::map<std::string, Assessment> assessed;  // by output fingerprint, in this group
+    // GEOS's isValid of exact kernels' written polygons and its reason, by fingerprint.
+    std::map<std::string, std::pair<std::optional<bool>, std::string>> geos_checked;
     const std::optional<double> exact_area =
         ref.unbounded ? std::nullopt : std::optional<double>(RationalKernel::to_nearest(ref.area));
     for (std::size_t k = first_kernel; k < o.kernels.size(); ++k) {
@@ -292,6 +313,20 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
         if (a.verdict == Verdict::valid_different || a.verdict == Verdict::invalid_output) {
           r.rounding_bound = rounding_bound(input_resolution(cs.a, cs.b), perimeter(ref.cycles),
                                             perimeter(exact_cycles(out.output)));
+        }
+        // Issue 12: the output as written (certified rounding) is valid for GEOS too.
+        if (is_exact_kernel(o.kernels[k]) && !out.output.unbounded && is_in_geos_range(out.output.polygons)) {
+          auto geos = geos_checked.find(key);
+          if (geos == geos_checked.end()) {
+            std::string why;
+            const std::optional<bool> valid = geos_is_valid(out.output.polygons, &why);
+            geos = geos_checked.emplace(key, std::pair{valid, why}).first;
+          }
+          r.geos_valid = geos->second.first;
+          if (r.geos_valid == false) {
+            r.message += (r.message.empty() ? "" : "; ") + std::string("GEOS isValid of the written output: ") +
+                         geos->second.second;
+          }
         }
       } catch (const std::exception& e) {
         r.verdict = Verdict::error;

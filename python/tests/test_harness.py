@@ -31,6 +31,12 @@ def test_builtin_sweep_rows():
     assert verdicts[("exact", "exact_match")] == exact_runs
     # the double kernel's failures on rotated configurations are the data the harness exists for
     assert any(k == "double" and v != "exact_match" for k, v in verdicts)
+    # issue 12: the exact kernel's written output is valid for GEOS too (where GEOS is built)
+    written = [r for r in rows if r["kernel"] == "exact" and r["certified_valid"] is not None]
+    assert written and all(r["certified_valid"] for r in written)
+    if "geos" in h.peer_names():
+        assert all(r["geos_valid"] is True for r in written), [r for r in written if r["geos_valid"] is not True][:1]
+    assert all(r["geos_valid"] is None for r in rows if r["kernel"] == "double")
     frame = h.sweep(["shared_edge"], kernels=["exact"], ops=["union"], regular=True, as_frame=True)
     assert isinstance(frame, pd.DataFrame) and list(frame.columns) == h.columns()
     assert (frame["verdict"] == "exact_match").all() and (frame["op"] == "union").all()

@@ -7,6 +7,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -188,10 +189,38 @@ TEST(Sweep, BinaryWritesTheCsvAndTheReport) {
     EXPECT_TRUE(fs::exists(dir / "plots" / "failure_vs_ulps.png"));
     EXPECT_NE(text.find("plots/failure_vs_ulps.png"), std::string::npos);
   }
-  // The report regenerates from the CSV alone.
+  // Results that certified rounding snapped (ulp_perturbed, kettner_grid) are pictured.
+  const auto snapped = std::count_if(rows.begin(), rows.end(), [](const ResultRow& r) {
+    return r.kernel == "exact" && r.certified_snapped == true;
+  });
+  EXPECT_GT(snapped, 0);
+  std::size_t pictures = 0;
+  for (const auto& a : read_artefacts(dir.string())) {
+    if (a.kind != Artefact::Kind::snapping) continue;
+    ++pictures;
+    EXPECT_TRUE(fs::exists(dir / a.path)) << a.path;
+    EXPECT_NE(text.find("](" + a.path + ")"), std::string::npos) << a.path;
+  }
+  EXPECT_GT(pictures, 0u);
+  // The report regenerates from the CSV alone, with the pictures of snapped results.
   fs::remove(dir / "README.md");
   ASSERT_EQ(run("report --no-plots " + dir.string()), 0);
   EXPECT_TRUE(fs::exists(dir / "README.md"));
+  std::ifstream again(dir / "README.md");
+  const std::string regenerated((std::istreambuf_iterator<char>(again)), {});
+  EXPECT_NE(regenerated.find("](pictures/snapping/"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(Sweep, NoArtefactsMeansNoPicturesOfSnappedResults) {
+  const fs::path dir = fresh_dir("no_artefacts");
+  ASSERT_EQ(run("run --quick --seeds 1 --generators ulp_perturbed --kernels exact --no-artefacts --no-plots -o " +
+                dir.string()),
+            0);
+  const auto rows = read_results_dir(dir.string());
+  EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [](const ResultRow& r) { return r.certified_snapped == true; }));
+  EXPECT_FALSE(fs::exists(dir / "pictures"));
+  EXPECT_TRUE(read_artefacts(dir.string()).empty());
   fs::remove_all(dir);
 }
 
