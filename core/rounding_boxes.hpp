@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "core/boolean_op.hpp"
@@ -100,13 +101,14 @@ inline bool ends_apart(const RoundedVertexBox& a, const RoundedVertexBox& b) {
 // ranges that meet have cell ranges that meet.
 class BoxGrid {
  public:
-  BoxGrid(const std::vector<RoundedVertexBox>& v) {
+  // About `cells` cells (at least one) over the points of v.
+  BoxGrid(const std::vector<RoundedVertexBox>& v, std::size_t cells) {
     double x1 = -HUGE_VAL, y1 = -HUGE_VAL;
     for (const auto& b : v) {
       x0_ = std::min(x0_, b.at.x), y0_ = std::min(y0_, b.at.y);
       x1 = std::max(x1, b.at.x), y1 = std::max(y1, b.at.y);
     }
-    const double n = static_cast<double>(std::max<std::size_t>(v.size(), 1));
+    const double n = static_cast<double>(std::max<std::size_t>(cells, 1));
     const double w = x1 - x0_, h = y1 - y0_;
     constexpr double kMaxSide = 1 << 20;
     if (w > 0 && h > 0 && std::isfinite(w * h)) {
@@ -143,10 +145,12 @@ inline double above(double v) { return next_up(v); }
 // The certificate over vertex boxes and edges between them (indices into `v`), with the
 // candidate pairs from the grid, or from all pairs (`all_pairs`, for tests). A vertex whose
 // box is its point has not moved; a vertex and an edge of which none moved are never
-// tested (the exact result has them apart). Edges are searched in parts on up to `threads`
-// threads. Each cell lists the moved vertices and the others apart: an edge whose ends did
-// not move looks at the moved ones only, so that a result where only a few crossings moved
-// (a smooth curve of many input points) costs one pass, however its points crowd the cells.
+// tested (the exact result has them apart). The moved vertices are listed in the grid's
+// cells and every edge visits the cells its hull may meet; the other vertices against the
+// edges with a moved end: when those edges are few (a smooth curve of many input points
+// with a few crossings), they are listed in the cells and each vertex looks in its own;
+// otherwise the vertices are listed too. Edges are searched in parts on up to `threads`
+// threads.
 inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const std::vector<std::array<int, 2>>& edges,
                                 bool all_pairs = false, unsigned threads = 1) {
   const auto moved = [&](int k) {
@@ -156,8 +160,11 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   for (const auto& b : v) {
     if (!std::isfinite(b.rx) || !std::isfinite(b.ry)) return false;
   }
+  std::size_t num_moved = 0, moved_edges = 0;
+  for (std::size_t k = 0; k < v.size(); ++k) num_moved += moved(static_cast<int>(k));
   for (const auto& [a, b] : edges) {
     if (!ends_apart(v[static_cast<std::size_t>(a)], v[static_cast<std::size_t>(b)])) return false;
+    moved_edges += moved(a) || moved(b);
   }
   const auto clear = [&](int k, const std::array<int, 2>& e) {
     if (k == e[0] || k == e[1]) return true;
@@ -173,18 +180,52 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     }
     return true;
   }
-  const BoxGrid grid(v);
-  // Each vertex in the cells its box meets, as offsets into one array: per cell, first the
-  // moved vertices, then the others.
+  if (num_moved == 0) return true;  // nothing moved: no pair to test
+  const std::size_t still = v.size() - num_moved;
+  const bool list_edges = 8 * moved_edges <= still;  // the vertices that did not move look up the edges
+  const BoxGrid grid(v, list_edges ? num_moved + moved_edges : v.size());
   const std::size_t cells = static_cast<std::size_t>(grid.cells());
+  std::size_t budget = 64 * (v.size() + edges.size()) + (1u << 20);
+  // The cells an edge's hull may meet, each once: the edge cut into pieces about one cell
+  // long, each piece's box widened by the hull's half-sizes and by the error of computing
+  // the piece's ends (u + t (w - u): at most 16 eps (|u| + |w|) per coordinate). f(cell)
+  // returns false to stop; so does this.
+  const auto for_each_cell = [&](const std::array<int, 2>& e, auto&& f) {
+    const auto& a = v[static_cast<std::size_t>(e[0])];
+    const auto& b = v[static_cast<std::size_t>(e[1])];
+    const Point u = a.at, w = b.at;
+    const double mx = rounded_up(rounded_up(std::max(a.rx, b.rx) + rounded_up(0x1p-49 * (std::abs(u.x) + std::abs(w.x)))) + DBL_MIN);
+    const double my = rounded_up(rounded_up(std::max(a.ry, b.ry) + rounded_up(0x1p-49 * (std::abs(u.y) + std::abs(w.y)))) + DBL_MIN);
+    const int pieces = std::max(std::abs(grid.col(u.x) - grid.col(w.x)), std::abs(grid.row(u.y) - grid.row(w.y))) + 1;
+    const double dx = w.x - u.x, dy = w.y - u.y;
+    Point p = u;
+    int pc0 = 1, pc1 = 0, pr0 = 1, pr1 = 0;  // the previous piece's cells
+    for (int j = 1; j <= pieces; ++j) {
+      const double t = static_cast<double>(j) / pieces;
+      const Point q = j == pieces ? w : Point{u.x + t * dx, u.y + t * dy};
+      const int c0 = grid.col(below(std::min(p.x, q.x) - mx)), c1 = grid.col(above(std::max(p.x, q.x) + mx));
+      const int r0 = grid.row(below(std::min(p.y, q.y) - my)), r1 = grid.row(above(std::max(p.y, q.y) + my));
+      for (int r = r0; r <= r1; ++r) {
+        for (int c = c0; c <= c1; ++c) {
+          if (pc0 <= c && c <= pc1 && pr0 <= r && r <= pr1) continue;
+          if (!f(static_cast<std::size_t>(grid.cell(c, r)))) return false;
+        }
+      }
+      pc0 = c0, pc1 = c1, pr0 = r0, pr1 = r1;
+      p = q;
+    }
+    return true;
+  };
+  // The vertices listed: in each cell its box meets, per cell the moved ones first.
   std::vector<int> start(2 * cells + 1, 0);
   std::vector<std::array<int, 4>> span(v.size());
-  std::size_t budget = 64 * (v.size() + edges.size()) + (1u << 20);
   std::size_t entries = 0;
+  const auto listed = [&](std::size_t k) { return moved(static_cast<int>(k)) || !list_edges; };
   const auto list = [&](std::size_t k, int c, int r) {  // the list of vertex k in cell (c, r)
     return 2 * static_cast<std::size_t>(grid.cell(c, r)) + (moved(static_cast<int>(k)) ? 0 : 1);
   };
   for (std::size_t k = 0; k < v.size(); ++k) {
+    if (!listed(k)) continue;
     const auto& b = v[k];
     span[k] = {grid.col(below(b.at.x - b.rx)), grid.col(above(b.at.x + b.rx)), grid.row(below(b.at.y - b.ry)),
                grid.row(above(b.at.y + b.ry))};
@@ -210,59 +251,72 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   {
     std::vector<int> fill(start.begin(), start.end() - 1);
     for (std::size_t k = 0; k < v.size(); ++k) {
+      if (!listed(k)) continue;
       for (int r = span[k][2]; r <= span[k][3]; ++r) {
         for (int c = span[k][0]; c <= span[k][1]; ++c) in_cell[static_cast<std::size_t>(fill[list(k, c, r)]++)] = static_cast<int>(k);
       }
     }
   }
   span = {};
-  // Each edge visits the cells its hull may meet: cut into pieces about one cell long, each
-  // piece's box widened by the hull's half-sizes and by the error of computing the piece's
-  // ends (u + t (w - u): at most 16 eps (|u| + |w|) per coordinate).
+  // Every edge against the vertices listed in its cells (the moved ones, and the others when
+  // an end moved and they are listed).
   const std::size_t parts = threads > 1 && edges.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
-  budget /= parts;
+  const std::size_t part_budget = budget / parts;
   std::atomic<bool> refused{false};
   run_tasks(threads, parts, [&](std::size_t part) {
     std::size_t work = 0;
     const std::size_t first = edges.size() * part / parts, last = edges.size() * (part + 1) / parts;
     for (std::size_t i = first; i < last && !refused.load(std::memory_order_relaxed); ++i) {
       const auto& e = edges[i];
-      const auto& a = v[static_cast<std::size_t>(e[0])];
-      const auto& b = v[static_cast<std::size_t>(e[1])];
-      const std::size_t lists = moved(e[0]) || moved(e[1]) ? 2 : 1;  // the moved vertices, or all
-      const Point u = a.at, w = b.at;
-      const double mx = rounded_up(rounded_up(std::max(a.rx, b.rx) + rounded_up(0x1p-49 * (std::abs(u.x) + std::abs(w.x)))) + DBL_MIN);
-      const double my = rounded_up(rounded_up(std::max(a.ry, b.ry) + rounded_up(0x1p-49 * (std::abs(u.y) + std::abs(w.y)))) + DBL_MIN);
-      const int pieces = std::max(std::abs(grid.col(u.x) - grid.col(w.x)), std::abs(grid.row(u.y) - grid.row(w.y))) + 1;
-      const double dx = w.x - u.x, dy = w.y - u.y;
-      Point p = u;
-      for (int j = 1; j <= pieces; ++j) {
-        const double t = static_cast<double>(j) / pieces;
-        const Point q = j == pieces ? w : Point{u.x + t * dx, u.y + t * dy};
-        const int c0 = grid.col(below(std::min(p.x, q.x) - mx)), c1 = grid.col(above(std::max(p.x, q.x) + mx));
-        const int r0 = grid.row(below(std::min(p.y, q.y) - my)), r1 = grid.row(above(std::max(p.y, q.y) + my));
-        for (int r = r0; r <= r1; ++r) {
-          for (int c = c0; c <= c1; ++c) {
-            const std::size_t cell = static_cast<std::size_t>(grid.cell(c, r));
-            const int s = start[2 * cell], end = start[2 * cell + lists];
-            work += 1 + static_cast<std::size_t>(end - s);
-            for (int k = s; k < end; ++k) {
-              if (!clear(in_cell[static_cast<std::size_t>(k)], e)) {
-                refused = true;
-                return;
-              }
-            }
-          }
+      const std::size_t lists = moved(e[0]) || moved(e[1]) ? 2 : 1;  // the moved vertices, or all listed
+      const bool ok = for_each_cell(e, [&](std::size_t cell) {
+        const int s = start[2 * cell], end = start[2 * cell + lists];
+        work += 1 + static_cast<std::size_t>(end - s);
+        for (int k = s; k < end; ++k) {
+          if (!clear(in_cell[static_cast<std::size_t>(k)], e)) return false;
         }
-        if (work > budget) {
-          refused = true;
-          return;
-        }
-        p = q;
-      }
+        return work <= part_budget;
+      });
+      if (!ok) refused = true;
     }
   });
-  return !refused;
+  if (refused || !list_edges || moved_edges == 0) return !refused;
+  // The vertices that did not move against the edges with a moved end, listed in the cells
+  // they visit; a vertex's box is its point, in one cell.
+  std::vector<int> edge_start(cells + 1, 0);
+  std::size_t edge_entries = 0;
+  for (const auto& e : edges) {
+    if (!moved(e[0]) && !moved(e[1])) continue;
+    for_each_cell(e, [&](std::size_t cell) {
+      ++edge_start[cell + 1];
+      return ++edge_entries <= budget;
+    });
+    if (edge_entries > budget) return false;
+  }
+  for (std::size_t i = 1; i < edge_start.size(); ++i) edge_start[i] += edge_start[i - 1];
+  std::vector<int> edge_in_cell(edge_entries);
+  {
+    std::vector<int> fill(edge_start.begin(), edge_start.end() - 1);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const auto& e = edges[i];
+      if (!moved(e[0]) && !moved(e[1])) continue;
+      for_each_cell(e, [&](std::size_t cell) {
+        edge_in_cell[static_cast<std::size_t>(fill[cell]++)] = static_cast<int>(i);
+        return true;
+      });
+    }
+  }
+  std::size_t work = 0;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (moved(static_cast<int>(k))) continue;
+    const std::size_t cell = static_cast<std::size_t>(grid.cell(grid.col(v[k].at.x), grid.row(v[k].at.y)));
+    work += static_cast<std::size_t>(edge_start[cell + 1] - edge_start[cell]);
+    if (work > budget) return false;
+    for (int i = edge_start[cell]; i < edge_start[cell + 1]; ++i) {
+      if (!clear(static_cast<int>(k), edges[static_cast<std::size_t>(edge_in_cell[static_cast<std::size_t>(i)])])) return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace detail
@@ -275,6 +329,13 @@ void rounded_vertex_boxes(const BooleanResult<K>& r, const std::vector<std::vect
                           const std::vector<std::vector<int>>& polygon_cycles, std::vector<RoundedVertexBox>& boxes,
                           std::vector<std::array<int, 2>>& edges) {
   std::vector<int> slot(static_cast<std::size_t>(r.arrangement.num_vertices()), -1);
+  constexpr bool doubles_in = std::is_same_v<typename K::Point, Point>;
+  std::size_t total = 0;
+  for (const auto& cycles : polygon_cycles) {
+    for (const int c : cycles) total += r.cycles[static_cast<std::size_t>(c)].vertices.size();
+  }
+  boxes.reserve(total);
+  edges.reserve(total);
   // Half of the box's extent about the rounded point p (p lies in it when rounded to nearest).
   const auto half = [](double p, double lo, double hi) { return rounded_up(std::max({p - lo, hi - p, 0.0})); };
   for (const auto& cycles : polygon_cycles) {
@@ -286,6 +347,10 @@ void rounded_vertex_boxes(const BooleanResult<K>& r, const std::vector<std::vect
         if (s >= 0) continue;
         s = static_cast<int>(boxes.size());
         const Point at = rounded[static_cast<std::size_t>(c)][k];
+        if (doubles_in && r.arrangement.is_input_point(ids[k])) {  // an input double rounds to itself
+          boxes.push_back({at, 0, 0});
+          continue;
+        }
         const std::array<double, 4> box = K::vertex_box(r.vertex(ids[k]));  // x0, y0, x1, y1
         boxes.push_back({at, half(at.x, box[0], box[2]), half(at.y, box[1], box[3])});
       }

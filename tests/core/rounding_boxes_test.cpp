@@ -233,6 +233,50 @@ TEST(RoundingBoxes, TouchingShapesAgreeWithTheFullCheck) {
   }
 }
 
+// Many input points and few crossings (the certificate then lists the edges at crossings
+// in the grid and each still vertex looks in its cell): a ring of 2000 points crossed by a
+// triangle whose edge passes a few ulps from one of them, or through it.
+TEST(RoundingBoxes, FewCrossingsAmongManyPointsAgreeWithAllPairs) {
+  std::mt19937_64 rng(test_seed(53));
+  std::uniform_real_distribution<double> u(0, 1);
+  int certified = 0, refused = 0;
+  for (int i = 0; i < 60; ++i) {
+    Polygon ring;
+    ring.rings.emplace_back();
+    const int n = 2000;
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * std::numbers::pi * k / n;
+      const double radius = 10 * (1 + 0.05 * u(rng));
+      ring.rings.back().push_back({radius * std::cos(t), radius * std::sin(t)});
+    }
+    const Point near = ring.rings.back()[static_cast<std::size_t>(rng() % n)];
+    const int ulps = static_cast<int>(rng() % 9) - 4;
+    Point through = near;
+    for (int k = 0; k < std::abs(ulps); ++k) through.y = std::nextafter(through.y, ulps > 0 ? HUGE_VAL : -HUGE_VAL);
+    Polygon tri;
+    // The edge far -> inside passes `through` (up to its own rounding).
+    const Point d{2 * near.x + 0.37, 2 * near.y - 0.11};
+    const Point far{through.x + d.x, through.y + d.y}, inside{through.x - 0.5 * d.x, through.y - 0.5 * d.y};
+    tri.rings.push_back({far, inside, {inside.x + 0.3, inside.y - 0.2}});
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference}) {
+      Options opt;
+      opt.op = op;
+      BooleanResult<ExactKernel> r;
+      try {
+        r = boolean_op<ExactKernel>(ring, tri, opt);
+      } catch (const InvalidInput&) {
+        continue;
+      }
+      const Verdicts v = verdicts(r, true);
+      ASSERT_EQ(v.grid, v.all_pairs) << "case " << i << " op " << operation_name(op);
+      ASSERT_TRUE(!v.grid || v.full) << "case " << i << " op " << operation_name(op);
+      (v.grid ? certified : refused) += 1;
+    }
+  }
+  std::printf("certified %d, refused %d\n", certified, refused);
+  EXPECT_GT(certified, 0);
+}
+
 TEST(RoundingBoxes, StarsAreCertifiedOnAnyNumberOfThreads) {
   std::mt19937_64 rng(test_seed(41));
   for (const int n : {300, 3000}) {
