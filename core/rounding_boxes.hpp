@@ -218,21 +218,23 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   };
   // The vertices listed: in each cell its box meets, per cell the moved ones first.
   std::vector<int> start(2 * cells + 1, 0);
-  std::vector<std::array<int, 4>> span(v.size());
   std::size_t entries = 0;
+  const auto span = [&](std::size_t k) {  // columns and rows of the cells vertex k's box meets
+    const auto& b = v[k];
+    return std::array<int, 4>{grid.col(below(b.at.x - b.rx)), grid.col(above(b.at.x + b.rx)), grid.row(below(b.at.y - b.ry)),
+                              grid.row(above(b.at.y + b.ry))};
+  };
   const auto listed = [&](std::size_t k) { return moved(static_cast<int>(k)) || !list_edges; };
   const auto list = [&](std::size_t k, int c, int r) {  // the list of vertex k in cell (c, r)
     return 2 * static_cast<std::size_t>(grid.cell(c, r)) + (moved(static_cast<int>(k)) ? 0 : 1);
   };
   for (std::size_t k = 0; k < v.size(); ++k) {
     if (!listed(k)) continue;
-    const auto& b = v[k];
-    span[k] = {grid.col(below(b.at.x - b.rx)), grid.col(above(b.at.x + b.rx)), grid.row(below(b.at.y - b.ry)),
-               grid.row(above(b.at.y + b.ry))};
-    entries += static_cast<std::size_t>(span[k][1] - span[k][0] + 1) * static_cast<std::size_t>(span[k][3] - span[k][2] + 1);
+    const auto sp = span(k);
+    entries += static_cast<std::size_t>(sp[1] - sp[0] + 1) * static_cast<std::size_t>(sp[3] - sp[2] + 1);
     if (entries > budget) return false;
-    for (int r = span[k][2]; r <= span[k][3]; ++r) {
-      for (int c = span[k][0]; c <= span[k][1]; ++c) ++start[list(k, c, r) + 1];
+    for (int r = sp[2]; r <= sp[3]; ++r) {
+      for (int c = sp[0]; c <= sp[1]; ++c) ++start[list(k, c, r) + 1];
     }
   }
   // The work the edges will do, estimated before doing it: each vertex brings about two edges
@@ -252,12 +254,12 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     std::vector<int> fill(start.begin(), start.end() - 1);
     for (std::size_t k = 0; k < v.size(); ++k) {
       if (!listed(k)) continue;
-      for (int r = span[k][2]; r <= span[k][3]; ++r) {
-        for (int c = span[k][0]; c <= span[k][1]; ++c) in_cell[static_cast<std::size_t>(fill[list(k, c, r)]++)] = static_cast<int>(k);
+      const auto sp = span(k);
+      for (int r = sp[2]; r <= sp[3]; ++r) {
+        for (int c = sp[0]; c <= sp[1]; ++c) in_cell[static_cast<std::size_t>(fill[list(k, c, r)]++)] = static_cast<int>(k);
       }
     }
   }
-  span = {};
   // Every edge against the vertices listed in its cells (the moved ones, and the others when
   // an end moved and they are listed).
   const std::size_t parts = threads > 1 && edges.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
@@ -306,17 +308,25 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
       });
     }
   }
-  std::size_t work = 0;
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    if (moved(static_cast<int>(k))) continue;
-    const std::size_t cell = static_cast<std::size_t>(grid.cell(grid.col(v[k].at.x), grid.row(v[k].at.y)));
-    work += static_cast<std::size_t>(edge_start[cell + 1] - edge_start[cell]);
-    if (work > budget) return false;
-    for (int i = edge_start[cell]; i < edge_start[cell + 1]; ++i) {
-      if (!clear(static_cast<int>(k), edges[static_cast<std::size_t>(edge_in_cell[static_cast<std::size_t>(i)])])) return false;
+  const std::size_t vertex_parts = threads > 1 && v.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
+  const std::size_t vertex_budget = budget / vertex_parts;
+  run_tasks(threads, vertex_parts, [&](std::size_t part) {
+    std::size_t work = 0;
+    const std::size_t first = v.size() * part / vertex_parts, last = v.size() * (part + 1) / vertex_parts;
+    for (std::size_t k = first; k < last && !refused.load(std::memory_order_relaxed); ++k) {
+      if (moved(static_cast<int>(k))) continue;
+      const std::size_t cell = static_cast<std::size_t>(grid.cell(grid.col(v[k].at.x), grid.row(v[k].at.y)));
+      work += static_cast<std::size_t>(edge_start[cell + 1] - edge_start[cell]);
+      for (int i = edge_start[cell]; i < edge_start[cell + 1]; ++i) {
+        if (!clear(static_cast<int>(k), edges[static_cast<std::size_t>(edge_in_cell[static_cast<std::size_t>(i)])])) work = vertex_budget + 1;
+      }
+      if (work > vertex_budget) {
+        refused = true;
+        return;
+      }
     }
-  }
-  return true;
+  });
+  return !refused;
 }
 
 }  // namespace detail
