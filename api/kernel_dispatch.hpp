@@ -58,7 +58,7 @@ BooleanOutput boolean_output(const BooleanResult<K>& r, const BooleanOptions& o,
   std::optional<SnapGrid> grid;
   if (!o.grid.empty()) grid = SnapGrid::parse(o.grid);
   BooleanOutput out;
-  out.output = to_output<K, ExactKernel>(r, o.exact_coordinates);
+  out.output = to_output<K, ExactKernel>(r, o.exact_coordinates, resolve_threads(o.threads));
   const auto t2 = std::chrono::steady_clock::now();
   certify_rounding(r, out.output, o.rounding, grid);
   out.stats.rounding_ns =

@@ -54,14 +54,14 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
     const BooleanResult<ExactKernel> r = boolean_op<ExactKernel>(w.a, w.b, opt);
     op += seconds_since(t);
     t = Clock::now();
-    Output out = to_output<ExactKernel, ExactKernel>(r, false);
+    Output out = to_output<ExactKernel, ExactKernel>(r, false, resolve_threads(opt.threads));
     output += seconds_since(t);
     t = Clock::now();
     certify_rounding(r, out, RoundingMode::certified, std::nullopt);
     certify += seconds_since(t);
     snapped = snapped || out.rounding.snapped;
     t = Clock::now();
-    const std::string text = write_wkt(out);
+    const std::string text = write_wkt(out, opt.threads);
     wkt += seconds_since(t);
     benchmark::DoNotOptimize(text.data());
     t = Clock::now();

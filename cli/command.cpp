@@ -34,7 +34,7 @@ std::string with_final_newline(std::string text) {
 // form (both describe finite areas), so it is refused with the way out rather than cut down
 // to its bounded part.
 std::string format_output(OutputFormat format, const std::string& what, const Polygon& a, const Polygon& b,
-                          const BooleanOutput& r) {
+                          const BooleanOutput& r, unsigned threads) {
   switch (format) {
     case OutputFormat::wkt:
     case OutputFormat::geojson:
@@ -43,7 +43,7 @@ std::string format_output(OutputFormat format, const std::string& what, const Po
                           (format == OutputFormat::wkt ? "WKT" : "GeoJSON") +
                           " cannot express; use --format json (or svg)");
       }
-      return with_final_newline(format == OutputFormat::wkt ? write_wkt(r.output) : write_geojson(r.output));
+      return with_final_newline(format == OutputFormat::wkt ? write_wkt(r.output, threads) : write_geojson(r.output));
     case OutputFormat::native_json:
       return with_final_newline(write_native_json(r.output, r.stats.kernel));
     case OutputFormat::svg:
@@ -133,7 +133,7 @@ void run_command(const CommandOptions& o) {
   const std::string what =
       std::string(operation_name(o.op)) + " of A (" + type_name(a.type) + ") and B (" + type_name(b.type) + ")";
   OutputFile out(o.output);
-  out.write(format_output(o.format, what, a, b, result));
+  out.write(format_output(o.format, what, a, b, result, o.threads));
   out.commit();
   throw_if_stats_lost(stats_lost);
   throw_if_written_invalid(result, o.format);
@@ -166,7 +166,7 @@ void run_parts_command(const PartsCommandOptions& o) {
   const int stats_lost = o.stats ? print_stats(result, counters) : 0;
   const Polygon drawn = fill_rule_polygon(in.parts, o.fill_rule.value_or(FillRule::evenodd));
   OutputFile out(o.output);
-  out.write(format_output(o.format, what, drawn, Polygon{}, result));
+  out.write(format_output(o.format, what, drawn, Polygon{}, result, options.threads));
   out.commit();
   throw_if_stats_lost(stats_lost);
   throw_if_written_invalid(result, o.format);

@@ -118,11 +118,8 @@ bool rounding_keeps_topology(const BooleanResult<K>& r, const std::vector<std::v
         slot[static_cast<std::size_t>(id)] = static_cast<int>(ids.size());
         ids.push_back(id);
         at.push_back(rounded[c][k]);
-        bool m = !r.arrangement.is_input_point(id);
-        if (m || !std::is_same_v<typename K::Point, Point>) {
-          m = K::compare_vertices(K::vertex(K::point(rounded[c][k])), r.vertex(id)) != Sign::zero;
-        }
-        moved.push_back(m);
+        // Input points of doubles stay; the others are compared exactly below.
+        moved.push_back(!r.arrangement.is_input_point(id) || !std::is_same_v<typename K::Point, Point>);
       }
     }
     if (cyc.size() < 2) continue;
@@ -130,9 +127,15 @@ bool rounding_keeps_topology(const BooleanResult<K>& r, const std::vector<std::v
       edges.push_back({slot[static_cast<std::size_t>(cyc[k])], slot[static_cast<std::size_t>(cyc[(k + 1) % cyc.size()])]});
     }
   }
+  // Exact comparisons (GMP for crossings whose box holds their rounded point, nearly all),
+  // stopped as soon as too many vertices moved: on a result of 10^5 crossings they would
+  // cost more than the operation.
   std::vector<int> moved_vertices;
   for (std::size_t v = 0; v < ids.size(); ++v) {
+    if (!moved[v]) continue;
+    moved[v] = K::compare_vertices(K::vertex(K::point(at[v])), r.vertex(ids[v])) != Sign::zero;
     if (moved[v]) moved_vertices.push_back(static_cast<int>(v));
+    if (moved_vertices.size() > max_moved) return false;
   }
   if (moved_vertices.empty()) return true;
   std::vector<int> moved_edges;

@@ -10,6 +10,7 @@
 // it; tests/core/ogc_validity_test.cpp checks it on the degenerate generators).
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -19,7 +20,9 @@
 #include "core/boolean_op.hpp"
 #include "core/ogc_validity.hpp"
 #include "core/output.hpp"
+#include "core/parallel.hpp"
 #include "core/rounded_rings.hpp"
+#include "core/rounding_boxes.hpp"
 #include "core/rounding_motion.hpp"
 
 namespace mk {
@@ -76,21 +79,59 @@ void rounded_points_in_order(const BooleanResult<K>& r, const std::vector<std::v
   }
 }
 
+// Every cycle's vertices rounded to the nearest doubles. A kernel whose vertices are plain
+// values (VertexBoxes: no shared lazy state) rounds a large result on several threads, in
+// equal runs of the cycles' vertices one after another: the same doubles on any number.
+template <Kernel K>
+std::vector<std::vector<Point>> rounded_cycles(const BooleanResult<K>& r, unsigned threads) {
+  std::vector<std::vector<Point>> rounded(r.cycles.size());
+  std::vector<std::size_t> first{0};  // the cycles' vertices numbered one after another
+  for (std::size_t c = 0; c < r.cycles.size(); ++c) {
+    rounded[c].resize(r.cycles[c].vertices.size());
+    first.push_back(first.back() + r.cycles[c].vertices.size());
+  }
+  const std::size_t work = first.back();
+  const unsigned t = VertexBoxes<K> ? threads_for(work, threads) : 1;
+  const std::size_t parts = t > 1 ? 8 * static_cast<std::size_t>(t) : 1;
+  run_tasks(t, parts, [&](std::size_t part) {
+    const std::size_t lo = work * part / parts, hi = work * (part + 1) / parts;
+    std::size_t c = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), lo) - first.begin()) - 1;
+    for (std::size_t i = lo; i < hi; ++i) {
+      while (i >= first[c + 1]) ++c;
+      const std::size_t k = i - first[c];
+      rounded[c][k] = K::approx(r.vertex(r.cycles[c].vertices[k]));
+    }
+  });
+  return rounded;
+}
+
 }  // namespace detail
 
 // Whether the result's polygons (each a list of cycle indices: shell, then holes), with
 // their vertices rounded as given, are valid OGC polygons, and its two-sided parts keep two
-// distinct ends. For an exact kernel, first the certificate that rounding moved nothing
-// across anything (cheap when few vertices moved); otherwise one sweep over the rounded
-// output, O(n log n).
+// distinct ends. For an exact kernel, first the certificates that rounding moved nothing
+// across anything: from boxes in floating point (rounding_boxes.hpp: linear, decides
+// almost every result of well-separated vertices), then exactly (rounding_motion.hpp: cheap
+// when few vertices moved); otherwise one sweep over the rounded output, O(n log n).
 template <Kernel K, Kernel V>
 bool is_valid_rounded_result_ogc(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
-                                 const std::vector<std::vector<int>>& polygon_cycles) {
+                                 const std::vector<std::vector<int>>& polygon_cycles, unsigned threads = 1) {
   for (std::size_t c = 0; c < r.cycles.size(); ++c) {
     if (r.cycles[c].vertices.size() == 2 && rounded[c][0] == rounded[c][1]) return false;
   }
   if constexpr (K::is_exact) {
-    if (rounding_keeps_topology(r, rounded, 256)) return true;
+    // Few crossings: the exact certificate looks near them only; many: the boxes' grid.
+    constexpr std::size_t few = 256;
+    std::size_t crossings = 0;
+    for (const auto& c : r.cycles) {
+      for (const int id : c.vertices) crossings += !r.arrangement.is_input_point(id);
+    }
+    const bool few_moved = crossings <= few && std::is_same_v<typename K::Point, Point>;
+    if (few_moved && rounding_keeps_topology(r, rounded, few)) return true;
+    if constexpr (VertexBoxes<K>) {
+      if (rounding_boxes_keep_topology(r, rounded, polygon_cycles, threads)) return true;
+    }
+    if (!few_moved && rounding_keeps_topology(r, rounded, few)) return true;
   }
   std::vector<Point> pts;
   std::vector<int> slot;
@@ -121,18 +162,41 @@ bool is_valid_rounded_result_ogc(const BooleanResult<K>& r, const std::vector<st
   }
 }
 
+// The polygons of a bounded result, each as its shell's cycle index, then its holes'
+// (holes by the inclusion forest); none for an unbounded result.
+template <Kernel K>
+std::vector<std::vector<int>> result_polygon_cycles(const BooleanResult<K>& r) {
+  std::vector<std::vector<int>> polygon_cycles;
+  if (r.unbounded) return polygon_cycles;
+  const std::vector<int> parent = inclusion_parents(r.arrangement, r.cycles);
+  std::vector<int> shell_of(r.cycles.size(), -1);
+  for (std::size_t i = 0; i < r.cycles.size(); ++i) {
+    if (r.cycles[i].vertices.size() < 3 || r.cycles[i].type != PolygonType::island) continue;
+    shell_of[i] = static_cast<int>(polygon_cycles.size());
+    polygon_cycles.push_back({static_cast<int>(i)});
+  }
+  for (std::size_t i = 0; i < r.cycles.size(); ++i) {
+    if (r.cycles[i].vertices.size() < 3 || r.cycles[i].type != PolygonType::hole) continue;
+    if (parent[i] >= 0 && shell_of[static_cast<std::size_t>(parent[i])] >= 0) {
+      polygon_cycles[static_cast<std::size_t>(shell_of[static_cast<std::size_t>(parent[i])])].push_back(static_cast<int>(i));
+    }
+  }
+  return polygon_cycles;
+}
+
 // `exact_coordinates`: also write each vertex's exact coordinates as strings (exact kernels),
-// which costs more than rounding them.
+// which costs more than rounding them. `threads`: for the validity check of large outputs.
 template <Kernel K, Kernel V>
-Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true) {
+Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsigned threads = 1) {
   Output out;
   out.unbounded = r.unbounded;
-  std::vector<std::vector<Point>> rounded;
-  for (const auto& c : r.cycles) {
+  const std::vector<std::vector<Point>> rounded = detail::rounded_cycles(r, threads);
+  for (std::size_t i = 0; i < r.cycles.size(); ++i) {
+    const auto& c = r.cycles[i];
     OutputIrreducible o;
     o.type = c.type;
+    o.vertices = rounded[i];
     for (const int id : c.vertices) {
-      o.vertices.push_back(K::approx(r.vertex(id)));
       if (K::is_exact && exact_coordinates) {
         const auto e = K::exact_coordinates(r.vertex(id));
         o.exact.push_back(e[0]);
@@ -141,31 +205,17 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true) {
     }
     if (c.vertices.size() == 1) out.isolated_points.push_back(o.vertices[0]);
     if (c.vertices.size() == 2) out.dangling_edges.push_back({o.vertices[0], o.vertices[1]});
-    rounded.push_back(o.vertices);
     out.irreducible.push_back(std::move(o));
   }
-  std::vector<std::vector<int>> polygon_cycles;  // per polygon: its shell's cycle, then its holes'
+  const std::vector<std::vector<int>> polygon_cycles = result_polygon_cycles(r);
   if (!r.unbounded) {
-    const std::vector<int> parent = inclusion_parents(r.arrangement, r.cycles);
-    std::vector<int> shell_of(r.cycles.size(), -1);
-    for (std::size_t i = 0; i < r.cycles.size(); ++i) {
-      if (r.cycles[i].vertices.size() < 3 || r.cycles[i].type != PolygonType::island) continue;
-      shell_of[i] = static_cast<int>(polygon_cycles.size());
-      polygon_cycles.push_back({static_cast<int>(i)});
-    }
-    for (std::size_t i = 0; i < r.cycles.size(); ++i) {
-      if (r.cycles[i].vertices.size() < 3 || r.cycles[i].type != PolygonType::hole) continue;
-      if (parent[i] >= 0 && shell_of[static_cast<std::size_t>(parent[i])] >= 0) {
-        polygon_cycles[static_cast<std::size_t>(shell_of[static_cast<std::size_t>(parent[i])])].push_back(static_cast<int>(i));
-      }
-    }
     for (const auto& cycles : polygon_cycles) {
       OgcPolygon p{out.irreducible[static_cast<std::size_t>(cycles[0])].vertices, {}};
       for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(out.irreducible[static_cast<std::size_t>(cycles[h])].vertices);
       out.polygons.push_back(std::move(p));
     }
   }
-  out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles);
+  out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles, threads);
   return out;
 }
 

@@ -1,5 +1,5 @@
 // Ring rules shared by the readers and writers (see ring_rules.hpp).
-// [OGC06-103 §6.1.7] [RFC7946 §3.1.6]
+// [OGC06-103 §6.1.7] [RFC7946 §3.1.6] [Sh97]
 // Preconditions: coordinates are finite.
 #include "io/ring_rules.hpp"
 
@@ -7,6 +7,7 @@
 
 #include <cstddef>
 
+#include "arithmetic/kernels/exact_kernel.hpp"
 #include "io/text_util.hpp"
 
 namespace mk::io_detail {
@@ -42,11 +43,10 @@ bool lexicographically_less(const Point& p, const Point& q) {
 
 int sign_of(const mpq_class& v) { return sgn(v); }
 
-// Exact orient2d(a, b, c) on doubles: every double converts to a rational exactly.
+// Exact orient2d(a, b, c) on doubles, by Shewchuk's adaptive stages [Sh97]: a written result
+// of many small rings asks it once per ring, and rationals made it cost more than the text.
 int exact_orientation(const Point& a, const Point& b, const Point& c) {
-  const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), cx(c.x), cy(c.y);
-  const mpq_class det = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-  return sign_of(det);
+  return static_cast<int>(ExactKernel::orient2d(a, b, c));
 }
 
 // Exact twice-area relative to the first vertex: the fallback for rings whose extreme

@@ -25,9 +25,9 @@ std::string describe_ogc_ring_problem(const Ring& closed, OgcRingProblem problem
 void remove_repeated_vertices(Ring& ring);
 
 // The exact sign of the ring's signed area: +1 counterclockwise, -1 clockwise, 0 for a
-// ring of zero area. Uses GMP rationals only for the one orientation test at the
-// lexicographically lowest vertex (or the whole area when that test is degenerate), so
-// a million-vertex ring costs one pass of double comparisons.
+// ring of zero area. One exact (adaptive) orientation test at the lexicographically lowest
+// vertex decides it, GMP rationals the whole area only when that test is degenerate, so a
+// million-vertex ring costs one pass of double comparisons.
 int ring_orientation(const Ring& ring);
 
 // Calls visit(point, is_first) for the ring in closed form (the first vertex repeated at the

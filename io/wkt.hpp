@@ -27,11 +27,12 @@ MultiPolygon read_wkt(std::string_view text, std::vector<std::string>* part_name
 
 // POLYGON for one polygon, MULTIPOLYGON for several, POLYGON EMPTY for none; rings are
 // closed, shells counterclockwise, holes clockwise, coordinates in shortest round-trip form.
-std::string write_wkt(const MultiPolygon& polygons);
+// `threads` (0: every core) format a large output in parts, joined into the same text.
+std::string write_wkt(const MultiPolygon& polygons, unsigned threads = 1);
 
 // As above for a Boolean result; dangling edges and isolated points turn it into a
 // GEOMETRYCOLLECTION of the (multi)polygon, LINESTRINGs and POINTs. Throws
 // mk::InvalidInput for an unbounded result, which WKT cannot express.
-std::string write_wkt(const Output& output);
+std::string write_wkt(const Output& output, unsigned threads = 1);
 
 }  // namespace mk

@@ -42,4 +42,11 @@ concept Kernel = requires(const typename K::Point& p, const typename K::Vertex& 
   { K::exact_coordinates(v) } -> std::same_as<std::array<std::string, 2>>;
 };
 
+// Optional: a box {x0, y0, x1, y1} that certainly holds a vertex (an input point's box is
+// the point). Output checks use it to prove rounding harmless without exact arithmetic.
+template <class K>
+concept VertexBoxes = Kernel<K> && requires(const typename K::Vertex& v) {
+  { K::vertex_box(v) } -> std::same_as<std::array<double, 4>>;
+};
+
 }  // namespace mk

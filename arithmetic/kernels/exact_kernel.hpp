@@ -92,6 +92,9 @@ struct ExactKernel {
     return v;
   }
 
+  // The box the vertex certainly lies in (VertexBoxes): an input point's is the point.
+  static std::array<double, 4> vertex_box(const Vertex& v) { return {v.lo[0], v.lo[1], v.hi[0], v.hi[1]}; }
+
   static RationalPoint exact(const Vertex& v) {
     if (!v.is_crossing) return RationalKernel::point(v.a0);
     return RationalKernel::crossing(RationalKernel::point(v.a0), RationalKernel::point(v.a1),

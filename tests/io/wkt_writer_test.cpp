@@ -3,6 +3,7 @@
 // Preconditions: none.
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -115,6 +116,36 @@ TEST(ioWktWriter, UnboundedResultIsAnError) {
   EXPECT_TRUE(rejects([&] { write_wkt(out); },
                       "the result is unbounded (hole type) and cannot be written as WKT; use "
                       "--format json"));
+}
+
+// A large output is formatted in parts on several threads: the text is the same, byte for
+// byte, as on one thread, and as written point by point here (a clockwise shell of 100,000
+// points that must be turned around, a hole, a second polygon, non-regular parts).
+TEST(ioWktWriter, ThreadsWriteTheSameBytes) {
+  const std::size_t n = 100'000;
+  Ring shell;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = -2 * 3.141592653589793 * static_cast<double>(i) / static_cast<double>(n);
+    shell.push_back({100 * std::cos(t), 100 * std::sin(t) + 1e-7 * static_cast<double>(i % 7)});
+  }
+  Output out;
+  out.polygons = {OgcPolygon{shell, {{{1, 1}, {1, 2}, {2, 2}, {2, 1}}}}, OgcPolygon{{{300, 0}, {301, 0}, {300, 1}}, {}}};
+  std::string expected = "GEOMETRYCOLLECTION (MULTIPOLYGON (((";
+  const auto point = [](const Point& p) {
+    const auto text = [](double v) {
+      char buf[32];
+      if (v == 0) v = 0;  // "-0" is written "0"
+      return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+    };
+    return text(p.x) + " " + text(p.y);
+  };
+  for (std::size_t i = 0; i <= n; ++i) expected += (i ? ", " : "") + point(shell[(n - i % n) % n]);
+  expected += "), (1 1, 1 2, 2 2, 2 1, 1 1)), ((300 0, 301 0, 300 1, 300 0))), LINESTRING (1 0, 2 0), POINT (5 5))";
+  out.dangling_edges = {{{1, 0}, {2, 0}}};
+  out.isolated_points = {{5, 5}};
+  EXPECT_EQ(write_wkt(out, 1), expected);
+  for (const unsigned threads : {0u, 2u, 3u}) EXPECT_EQ(write_wkt(out, threads), expected) << threads << " threads";
+  EXPECT_EQ(write_wkt(out.polygons, 2), write_wkt(out.polygons, 1));
 }
 
 }  // namespace

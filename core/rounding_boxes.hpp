@@ -1,0 +1,387 @@
+// A certificate that rounding a valid exact result to its nearest doubles kept it valid,
+// decided in floating point from boxes: each vertex's box holds its exact position and its
+// rounded one (so the straight path between them), and each edge, while its ends move,
+// stays in the convex hull of their boxes. If no vertex's box meets that hull for an edge
+// not ending at the vertex, no vertex ever touches an edge it is not on during the motion;
+// the first new contact between two edges would be such a touch (an end of one on the
+// other), so none appears, none disappears, and the motion deforms the result without
+// changing its topology: the rounded rings are valid with the same holes and touches. This
+// is snap rounding's condition with nothing to reroute: every vertex at least a pixel away
+// from the edges it is not on [HP02], the pixel being its box, and rounding a continuous
+// deformation [GM98]. A pair is cleared when the boxes separate along x, along y, or along
+// the edge's normal, each proved with a margin that covers the rounding errors of its
+// evaluation (for the normal, the orientation determinant's error bound [Sh97]). Candidate
+// pairs come from a uniform grid of the rounded points.
+// [HP02] (vertices half a pixel from edges they are not on) [GM98] [Sh97] [MK89 §3.3]
+// Preconditions: the exact result is valid (to_output.hpp); K gives each vertex a box that
+// certainly holds it (VertexBoxes). False means "not certified" (the caller checks the
+// rounded output in full), never "invalid". The work is bounded: a grid that would visit
+// too many cells or pairs gives up.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include "core/boolean_op.hpp"
+#include "core/parallel.hpp"
+
+namespace mk {
+
+namespace detail {
+
+// A vertex in the certificate: its rounded point and half-sizes of a box about that point
+// holding its exact position too.
+struct RoundedVertexBox {
+  Point at;
+  double rx = 0, ry = 0;
+};
+
+// The next double above v (std::nextafter(v, inf) without a library call: the certificate
+// asks it several times per edge). Infinity and NaN stay; -0 and +0 go to the smallest
+// subnormal.
+inline double next_up(double v) {
+  if (!(v < HUGE_VAL)) return v;
+  if (v == 0) return std::numeric_limits<double>::denorm_min();
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  return std::bit_cast<double>(v > 0 ? bits + 1 : bits - 1);
+}
+inline double next_down(double v) { return -next_up(-v); }
+
+// An upper bound on a nonnegative real that one rounding to nearest made v.
+inline double rounded_up(double v) { return v > 0 ? next_up(v) : 0.0; }
+
+// Proves t < a - b exactly, for doubles a, b and a normal double t >= DBL_MIN: a - b is
+// computed with a relative error of at most 2^-53 (exactly when tiny), t * (1 + 2^-50) with
+// the same, and the factor covers both. Overflow gives infinity or false, never true
+// wrongly.
+inline bool proved_less(double t, double a, double b) { return t * (1 + 0x1p-50) < a - b; }
+
+// Whether vertex box v is clear of the convex hull of the boxes of a and b.
+inline bool clear_of_edge(const RoundedVertexBox& v, const RoundedVertexBox& a, const RoundedVertexBox& b) {
+  // Half-sizes of v's box plus the hull's: the hull lies in segment ab widened by the larger
+  // box of its ends, and the boxes meet when v's point lies in ab widened by both.
+  const double tx = std::max(rounded_up(v.rx + std::max(a.rx, b.rx)), DBL_MIN);
+  const double ty = std::max(rounded_up(v.ry + std::max(a.ry, b.ry)), DBL_MIN);
+  const Point& p = v.at;
+  const Point& u = a.at;
+  const Point& w = b.at;
+  if (proved_less(tx, std::min(u.x, w.x), p.x) || proved_less(tx, p.x, std::max(u.x, w.x)) ||
+      proved_less(ty, std::min(u.y, w.y), p.y) || proved_less(ty, p.y, std::max(u.y, w.y))) {
+    return true;
+  }
+  // Along the normal: |(w - u) x (p - u)| above the widening's reach |dx| ty + |dy| tx. The
+  // determinant's error is at most (3 + 16 eps) eps (|l| + |r|) [Sh97]; 2^-50 covers it and
+  // the rounding of this bound, 1 + 2^-48 the rounding of the reach. Products that
+  // underflow lose at most 2^-1075 each: the last term covers them.
+  const double dx = w.x - u.x, dy = w.y - u.y;
+  const double l = dx * (p.y - u.y);
+  const double r = dy * (p.x - u.x);
+  const double reach = std::abs(dx) * ty + std::abs(dy) * tx;
+  return std::abs(l - r) > reach * (1 + 0x1p-48) + (std::abs(l) + std::abs(r)) * 0x1p-50 + 0x1p-1000;
+}
+
+// Whether the boxes of an edge's two ends are apart (the edge never shrinks to a point).
+inline bool ends_apart(const RoundedVertexBox& a, const RoundedVertexBox& b) {
+  const double tx = std::max(rounded_up(a.rx + b.rx), DBL_MIN);
+  const double ty = std::max(rounded_up(a.ry + b.ry), DBL_MIN);
+  return proved_less(tx, a.at.x, b.at.x) || proved_less(tx, b.at.x, a.at.x) || proved_less(ty, a.at.y, b.at.y) ||
+         proved_less(ty, b.at.y, a.at.y);
+}
+
+// A uniform grid over the rounded points. Cell indices are monotone functions of the
+// coordinates (a subtraction and a product, each rounding monotonically), so two closed
+// ranges that meet have cell ranges that meet.
+class BoxGrid {
+ public:
+  // About `cells` cells (at least one) over the points of v.
+  BoxGrid(const std::vector<RoundedVertexBox>& v, std::size_t cells) {
+    double x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+    for (const auto& b : v) {
+      x0_ = std::min(x0_, b.at.x), y0_ = std::min(y0_, b.at.y);
+      x1 = std::max(x1, b.at.x), y1 = std::max(y1, b.at.y);
+    }
+    const double n = static_cast<double>(std::max<std::size_t>(cells, 1));
+    const double w = x1 - x0_, h = y1 - y0_;
+    constexpr double kMaxSide = 1 << 20;
+    if (w > 0 && h > 0 && std::isfinite(w * h)) {
+      const double side = std::sqrt(w * h / n);
+      nx_ = static_cast<int>(std::clamp(std::ceil(w / side), 1.0, kMaxSide));
+      ny_ = static_cast<int>(std::clamp(std::ceil(h / side), 1.0, kMaxSide));
+    } else {
+      nx_ = w > 0 ? static_cast<int>(std::min(n, kMaxSide)) : 1;
+      ny_ = h > 0 ? static_cast<int>(std::min(n, kMaxSide)) : 1;
+    }
+    while (static_cast<double>(nx_) * ny_ > 4 * n + 16) nx_ = std::max(1, nx_ / 2), ny_ = std::max(1, ny_ / 2);
+    // A spread beyond the doubles: one column (or row) holds everything.
+    if (!(w > 0 && std::isfinite(w))) nx_ = 1;
+    if (!(h > 0 && std::isfinite(h))) ny_ = 1;
+    ix_ = nx_ > 1 ? nx_ / w : 0;
+    iy_ = ny_ > 1 ? ny_ / h : 0;
+  }
+  int col(double x) const { return index((x - x0_) * ix_, nx_); }
+  int row(double y) const { return index((y - y0_) * iy_, ny_); }
+  int cells() const { return nx_ * ny_; }
+  int cell(int c, int r) const { return r * nx_ + c; }
+
+ private:
+  // NaN (infinity times a zero scale) goes to cell 0, the only one on that axis then.
+  static int index(double f, int n) { return !(f >= 1) ? 0 : (f >= n - 1 ? n - 1 : static_cast<int>(f)); }
+  double x0_ = HUGE_VAL, y0_ = HUGE_VAL;
+  double ix_ = 0, iy_ = 0;
+  int nx_ = 1, ny_ = 1;
+};
+
+inline double below(double v) { return next_down(v); }
+inline double above(double v) { return next_up(v); }
+
+// The certificate over vertex boxes and edges between them (indices into `v`), with the
+// candidate pairs from the grid, or from all pairs (`all_pairs`, for tests). A vertex whose
+// box is its point has not moved; a vertex and an edge of which none moved are never
+// tested (the exact result has them apart). The moved vertices are listed in the grid's
+// cells and every edge visits the cells its hull may meet; the other vertices against the
+// edges with a moved end: when those edges are few (a smooth curve of many input points
+// with a few crossings), they are listed in the cells and each vertex looks in its own;
+// otherwise the vertices are listed too. Edges are searched in parts on up to `threads`
+// threads.
+inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const std::vector<std::array<int, 2>>& edges,
+                                bool all_pairs = false, unsigned threads = 1) {
+  const auto moved = [&](int k) {
+    const auto& b = v[static_cast<std::size_t>(k)];
+    return b.rx != 0 || b.ry != 0;
+  };
+  for (const auto& b : v) {
+    if (!std::isfinite(b.rx) || !std::isfinite(b.ry)) return false;
+  }
+  std::size_t num_moved = 0, moved_edges = 0;
+  for (std::size_t k = 0; k < v.size(); ++k) num_moved += moved(static_cast<int>(k));
+  for (const auto& [a, b] : edges) {
+    if (!ends_apart(v[static_cast<std::size_t>(a)], v[static_cast<std::size_t>(b)])) return false;
+    moved_edges += moved(a) || moved(b);
+  }
+  const auto clear = [&](int k, const std::array<int, 2>& e) {
+    if (k == e[0] || k == e[1]) return true;
+    const auto& vb = v[static_cast<std::size_t>(k)];
+    return clear_of_edge(vb, v[static_cast<std::size_t>(e[0])], v[static_cast<std::size_t>(e[1])]);
+  };
+  if (all_pairs) {
+    for (const auto& e : edges) {
+      const bool edge_moved = moved(e[0]) || moved(e[1]);
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        if ((edge_moved || moved(static_cast<int>(k))) && !clear(static_cast<int>(k), e)) return false;
+      }
+    }
+    return true;
+  }
+  if (num_moved == 0) return true;  // nothing moved: no pair to test
+  const std::size_t still = v.size() - num_moved;
+  const bool list_edges = 8 * moved_edges <= still;  // the vertices that did not move look up the edges
+  const BoxGrid grid(v, list_edges ? num_moved + moved_edges : v.size());
+  const std::size_t cells = static_cast<std::size_t>(grid.cells());
+  std::size_t budget = 64 * (v.size() + edges.size()) + (1u << 20);
+  // The cells an edge's hull may meet, each once: the edge cut into pieces about one cell
+  // long, each piece's box widened by the hull's half-sizes and by the error of computing
+  // the piece's ends (u + t (w - u): at most 16 eps (|u| + |w|) per coordinate). f(cell)
+  // returns false to stop; so does this.
+  const auto for_each_cell = [&](const std::array<int, 2>& e, auto&& f) {
+    const auto& a = v[static_cast<std::size_t>(e[0])];
+    const auto& b = v[static_cast<std::size_t>(e[1])];
+    const Point u = a.at, w = b.at;
+    const double mx = rounded_up(rounded_up(std::max(a.rx, b.rx) + rounded_up(0x1p-49 * (std::abs(u.x) + std::abs(w.x)))) + DBL_MIN);
+    const double my = rounded_up(rounded_up(std::max(a.ry, b.ry) + rounded_up(0x1p-49 * (std::abs(u.y) + std::abs(w.y)))) + DBL_MIN);
+    const int pieces = std::max(std::abs(grid.col(u.x) - grid.col(w.x)), std::abs(grid.row(u.y) - grid.row(w.y))) + 1;
+    const double dx = w.x - u.x, dy = w.y - u.y;
+    Point p = u;
+    int pc0 = 1, pc1 = 0, pr0 = 1, pr1 = 0;  // the previous piece's cells
+    for (int j = 1; j <= pieces; ++j) {
+      const double t = static_cast<double>(j) / pieces;
+      const Point q = j == pieces ? w : Point{u.x + t * dx, u.y + t * dy};
+      const int c0 = grid.col(below(std::min(p.x, q.x) - mx)), c1 = grid.col(above(std::max(p.x, q.x) + mx));
+      const int r0 = grid.row(below(std::min(p.y, q.y) - my)), r1 = grid.row(above(std::max(p.y, q.y) + my));
+      for (int r = r0; r <= r1; ++r) {
+        for (int c = c0; c <= c1; ++c) {
+          if (pc0 <= c && c <= pc1 && pr0 <= r && r <= pr1) continue;
+          if (!f(static_cast<std::size_t>(grid.cell(c, r)))) return false;
+        }
+      }
+      pc0 = c0, pc1 = c1, pr0 = r0, pr1 = r1;
+      p = q;
+    }
+    return true;
+  };
+  // The vertices listed: in each cell its box meets, per cell the moved ones first.
+  std::vector<int> start(2 * cells + 1, 0);
+  std::size_t entries = 0;
+  const auto span = [&](std::size_t k) {  // columns and rows of the cells vertex k's box meets
+    const auto& b = v[k];
+    return std::array<int, 4>{grid.col(below(b.at.x - b.rx)), grid.col(above(b.at.x + b.rx)), grid.row(below(b.at.y - b.ry)),
+                              grid.row(above(b.at.y + b.ry))};
+  };
+  const auto listed = [&](std::size_t k) { return moved(static_cast<int>(k)) || !list_edges; };
+  const auto list = [&](std::size_t k, int c, int r) {  // the list of vertex k in cell (c, r)
+    return 2 * static_cast<std::size_t>(grid.cell(c, r)) + (moved(static_cast<int>(k)) ? 0 : 1);
+  };
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (!listed(k)) continue;
+    const auto sp = span(k);
+    entries += static_cast<std::size_t>(sp[1] - sp[0] + 1) * static_cast<std::size_t>(sp[3] - sp[2] + 1);
+    if (entries > budget) return false;
+    for (int r = sp[2]; r <= sp[3]; ++r) {
+      for (int c = sp[0]; c <= sp[1]; ++c) ++start[list(k, c, r) + 1];
+    }
+  }
+  // The work the edges will do, estimated before doing it: each vertex brings about two edges
+  // to its cell, and each edge there tests the cell's moved vertices (and the others when an
+  // end moved). Points crowding cells with moved ones are left to the full check.
+  {
+    std::size_t estimate = 0;
+    for (std::size_t c = 0; c < cells; ++c) {
+      const std::size_t m = static_cast<std::size_t>(start[2 * c + 1]), o = static_cast<std::size_t>(start[2 * c + 2]);
+      estimate += 2 * m * (m + o) + (m > 0 ? 2 * m * o : 0);
+    }
+    if (estimate > budget) return false;
+  }
+  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  std::vector<int> in_cell(entries);
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (!listed(k)) continue;
+      const auto sp = span(k);
+      for (int r = sp[2]; r <= sp[3]; ++r) {
+        for (int c = sp[0]; c <= sp[1]; ++c) in_cell[static_cast<std::size_t>(fill[list(k, c, r)]++)] = static_cast<int>(k);
+      }
+    }
+  }
+  // Every edge against the vertices listed in its cells (the moved ones, and the others when
+  // an end moved and they are listed).
+  const std::size_t parts = threads > 1 && edges.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
+  const std::size_t part_budget = budget / parts;
+  std::atomic<bool> refused{false};
+  run_tasks(threads, parts, [&](std::size_t part) {
+    std::size_t work = 0;
+    const std::size_t first = edges.size() * part / parts, last = edges.size() * (part + 1) / parts;
+    for (std::size_t i = first; i < last && !refused.load(std::memory_order_relaxed); ++i) {
+      const auto& e = edges[i];
+      const std::size_t lists = moved(e[0]) || moved(e[1]) ? 2 : 1;  // the moved vertices, or all listed
+      const bool ok = for_each_cell(e, [&](std::size_t cell) {
+        const int s = start[2 * cell], end = start[2 * cell + lists];
+        work += 1 + static_cast<std::size_t>(end - s);
+        for (int k = s; k < end; ++k) {
+          if (!clear(in_cell[static_cast<std::size_t>(k)], e)) return false;
+        }
+        return work <= part_budget;
+      });
+      if (!ok) refused = true;
+    }
+  });
+  if (refused || !list_edges || moved_edges == 0) return !refused;
+  // The vertices that did not move against the edges with a moved end, listed in the cells
+  // they visit; a vertex's box is its point, in one cell.
+  std::vector<int> edge_start(cells + 1, 0);
+  std::size_t edge_entries = 0;
+  for (const auto& e : edges) {
+    if (!moved(e[0]) && !moved(e[1])) continue;
+    for_each_cell(e, [&](std::size_t cell) {
+      ++edge_start[cell + 1];
+      return ++edge_entries <= budget;
+    });
+    if (edge_entries > budget) return false;
+  }
+  for (std::size_t i = 1; i < edge_start.size(); ++i) edge_start[i] += edge_start[i - 1];
+  std::vector<int> edge_in_cell(edge_entries);
+  {
+    std::vector<int> fill(edge_start.begin(), edge_start.end() - 1);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const auto& e = edges[i];
+      if (!moved(e[0]) && !moved(e[1])) continue;
+      for_each_cell(e, [&](std::size_t cell) {
+        edge_in_cell[static_cast<std::size_t>(fill[cell]++)] = static_cast<int>(i);
+        return true;
+      });
+    }
+  }
+  const std::size_t vertex_parts = threads > 1 && v.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
+  const std::size_t vertex_budget = budget / vertex_parts;
+  run_tasks(threads, vertex_parts, [&](std::size_t part) {
+    std::size_t work = 0;
+    const std::size_t first = v.size() * part / vertex_parts, last = v.size() * (part + 1) / vertex_parts;
+    for (std::size_t k = first; k < last && !refused.load(std::memory_order_relaxed); ++k) {
+      if (moved(static_cast<int>(k))) continue;
+      const std::size_t cell = static_cast<std::size_t>(grid.cell(grid.col(v[k].at.x), grid.row(v[k].at.y)));
+      work += static_cast<std::size_t>(edge_start[cell + 1] - edge_start[cell]);
+      for (int i = edge_start[cell]; i < edge_start[cell + 1]; ++i) {
+        if (!clear(static_cast<int>(k), edges[static_cast<std::size_t>(edge_in_cell[static_cast<std::size_t>(i)])])) work = vertex_budget + 1;
+      }
+      if (work > vertex_budget) {
+        refused = true;
+        return;
+      }
+    }
+  });
+  return !refused;
+}
+
+}  // namespace detail
+
+namespace detail {
+
+// The certificate's vertices (each once, with its box) and the polygons' edges between them.
+template <VertexBoxes K>
+void rounded_vertex_boxes(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
+                          const std::vector<std::vector<int>>& polygon_cycles, std::vector<RoundedVertexBox>& boxes,
+                          std::vector<std::array<int, 2>>& edges) {
+  std::vector<int> slot(static_cast<std::size_t>(r.arrangement.num_vertices()), -1);
+  constexpr bool doubles_in = std::is_same_v<typename K::Point, Point>;
+  std::size_t total = 0;
+  for (const auto& cycles : polygon_cycles) {
+    for (const int c : cycles) total += r.cycles[static_cast<std::size_t>(c)].vertices.size();
+  }
+  boxes.reserve(total);
+  edges.reserve(total);
+  // Half of the box's extent about the rounded point p (p lies in it when rounded to nearest).
+  const auto half = [](double p, double lo, double hi) { return rounded_up(std::max({p - lo, hi - p, 0.0})); };
+  for (const auto& cycles : polygon_cycles) {
+    for (const int c : cycles) {
+      const auto& ids = r.cycles[static_cast<std::size_t>(c)].vertices;
+      const std::size_t n = ids.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        int& s = slot[static_cast<std::size_t>(ids[k])];
+        if (s >= 0) continue;
+        s = static_cast<int>(boxes.size());
+        const Point at = rounded[static_cast<std::size_t>(c)][k];
+        if (doubles_in && r.arrangement.is_input_point(ids[k])) {  // an input double rounds to itself
+          boxes.push_back({at, 0, 0});
+          continue;
+        }
+        const std::array<double, 4> box = K::vertex_box(r.vertex(ids[k]));  // x0, y0, x1, y1
+        boxes.push_back({at, half(at.x, box[0], box[2]), half(at.y, box[1], box[3])});
+      }
+      for (std::size_t k = 0; k < n; ++k) {
+        edges.push_back({slot[static_cast<std::size_t>(ids[k])], slot[static_cast<std::size_t>(ids[(k + 1) % n])]});
+      }
+    }
+  }
+}
+
+}  // namespace detail
+
+// The certificate for a result's polygons (each a list of cycle indices), given the
+// cycles' rounded vertices: true when it proves the rounded polygons valid.
+template <VertexBoxes K>
+bool rounding_boxes_keep_topology(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
+                                  const std::vector<std::vector<int>>& polygon_cycles, unsigned threads = 1) {
+  std::vector<detail::RoundedVertexBox> boxes;
+  std::vector<std::array<int, 2>> edges;
+  detail::rounded_vertex_boxes(r, rounded, polygon_cycles, boxes, edges);
+  return detail::boxes_keep_topology(boxes, edges, false, threads);
+}
+
+}  // namespace mk

@@ -1,0 +1,302 @@
+// The box certificate of rounded output (core/rounding_boxes.hpp): its floating-point
+// separation tests never clear a pair that meets (against exact rational arithmetic, on
+// pairs at the edge of touching); it never certifies a rounding the full OGC check finds
+// invalid (near-degenerate triangles, where rounding breaks hundreds of results); its grid
+// finds every pair all pairs would; and it certifies large random results (stars), as the
+// full check finds them, on any number of threads.
+// [HP02] (vertices away from edges they are not on) [GM98] [Sh97] [OGC06-103 §6.1.11]
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <random>
+
+#include "arithmetic/kernels/exact_kernel.hpp"
+#include "core/boolean_op.hpp"
+#include "core/ogc_validity.hpp"
+#include "core/rounding_boxes.hpp"
+#include "core/to_output.hpp"
+
+namespace mk {
+namespace {
+
+using detail::RoundedVertexBox;
+
+std::uint64_t test_seed(std::uint64_t fallback) {
+  const char* env = std::getenv("MK_TEST_SEED");
+  const std::uint64_t seed = env ? std::strtoull(env, nullptr, 10) : fallback;
+  std::printf("seed %llu (set MK_TEST_SEED to change)\n", static_cast<unsigned long long>(seed));
+  return seed;
+}
+
+// Exactly: whether v's box meets segment ab widened by the larger of a's and b's boxes.
+bool meets_exactly(const RoundedVertexBox& v, const RoundedVertexBox& a, const RoundedVertexBox& b) {
+  const mpq_class tx = mpq_class(v.rx) + std::max(mpq_class(a.rx), mpq_class(b.rx));
+  const mpq_class ty = mpq_class(v.ry) + std::max(mpq_class(a.ry), mpq_class(b.ry));
+  const mpq_class px(v.at.x), py(v.at.y), ux(a.at.x), uy(a.at.y), wx(b.at.x), wy(b.at.y);
+  if (px + tx < std::min(ux, wx) || px - tx > std::max(ux, wx)) return false;
+  if (py + ty < std::min(uy, wy) || py - ty > std::max(uy, wy)) return false;
+  const mpq_class dx = wx - ux, dy = wy - uy;
+  const mpq_class cross = dx * (py - uy) - dy * (px - ux);
+  return abs(cross) <= abs(dx) * ty + abs(dy) * tx;
+}
+
+bool ends_meet_exactly(const RoundedVertexBox& a, const RoundedVertexBox& b) {
+  const mpq_class tx = mpq_class(a.rx) + mpq_class(b.rx), ty = mpq_class(a.ry) + mpq_class(b.ry);
+  return abs(mpq_class(a.at.x) - mpq_class(b.at.x)) <= tx && abs(mpq_class(a.at.y) - mpq_class(b.at.y)) <= ty;
+}
+
+TEST(RoundingBoxes, NextUpIsNextafter) {
+  const double values[] = {0.0, -0.0, 1.0, -1.0, 0x1p-1074, -0x1p-1074, 0x1p-1022, DBL_MAX, -DBL_MAX, 3.7e-310, -2.5, HUGE_VAL, -HUGE_VAL};
+  for (const double v : values) {
+    EXPECT_EQ(detail::next_up(v), std::nextafter(v, HUGE_VAL)) << v;
+    EXPECT_EQ(detail::next_down(v), std::nextafter(v, -HUGE_VAL)) << v;
+  }
+  EXPECT_TRUE(std::isnan(detail::next_up(std::nan(""))));
+}
+
+TEST(RoundingBoxes, SeparationIsNeverClaimedForBoxesThatMeet) {
+  std::mt19937_64 rng(test_seed(29));
+  std::uniform_real_distribution<double> u(-1, 1);
+  // Half-sizes from none to large, in ulps of the coordinates and beyond.
+  const auto half = [&] {
+    const int k = static_cast<int>(rng() % 4);
+    return k == 0 ? 0.0 : std::ldexp(1.0 + u(rng) * 0.5, -static_cast<int>(rng() % 60) - 4);
+  };
+  const double nudges[] = {-1e-9, -1e-15, -1e-16, 0, 1e-16, 1e-15, 1e-13, 1e-9};
+  int cleared = 0, far_cleared = 0, far = 0;
+  for (int i = 0; i < 40000; ++i) {
+    const double scale = std::ldexp(1.0, static_cast<int>(rng() % 40) - 20);
+    RoundedVertexBox a{{u(rng) * scale, u(rng) * scale}, half(), half()};
+    RoundedVertexBox b{{u(rng) * scale, u(rng) * scale}, half(), half()};
+    if (i % 5 == 0) b.at.y = a.at.y;  // level and vertical edges
+    if (i % 7 == 0) b.at.x = a.at.x;
+    RoundedVertexBox v{{0, 0}, half(), half()};
+    const double tx = v.rx + std::max(a.rx, b.rx), ty = v.ry + std::max(a.ry, b.ry);
+    const double nudge = nudges[rng() % std::size(nudges)];
+    const double s = rng() % 3 == 0 ? static_cast<double>(rng() % 2) : (u(rng) + 1) / 2;
+    const double dx = b.at.x - a.at.x, dy = b.at.y - a.at.y;
+    const bool side = rng() % 2 == 0;
+    if (side) {
+      // On the widened segment's side, nudged in or out along the normal.
+      const double len = std::hypot(dx, dy);
+      if (len == 0) continue;
+      const double reach = (std::abs(dx) * ty + std::abs(dy) * tx) / len;
+      const double off = reach * (1 + nudge) + nudge * scale;
+      v.at = {a.at.x + s * dx - dy / len * off, a.at.y + s * dy + dx / len * off};
+    } else {
+      // By an end's corner, nudged.
+      const RoundedVertexBox& e = s < 0.5 ? a : b;
+      v.at = {e.at.x + (tx + nudge * scale) * (rng() % 2 ? 1 : -1) * (1 + nudge), e.at.y + (ty + nudge * scale) * (rng() % 2 ? 1 : -1)};
+    }
+    const bool clear = detail::clear_of_edge(v, a, b);
+    const bool meets = meets_exactly(v, a, b);
+    ASSERT_FALSE(clear && meets) << "case " << i;
+    cleared += clear;
+    if (side && nudge >= 1e-9) {
+      ++far;
+      far_cleared += clear;
+    }
+    ASSERT_FALSE(detail::ends_apart(a, b) && ends_meet_exactly(a, b)) << "case " << i;
+  }
+  std::printf("cleared %d, nudged out from a side by 1e-9: %d of %d\n", cleared, far_cleared, far);
+  EXPECT_GT(far_cleared, far * 9 / 10);  // the margins cost nothing visible at 1e-9
+}
+
+Polygon random_triangle(std::mt19937_64& rng, bool near_degenerate) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  Polygon p;
+  if (!near_degenerate) {
+    p.rings.push_back({{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}});
+    return p;
+  }
+  const double x0 = u(rng), y0 = u(rng);
+  const double dx = u(rng), dy = u(rng);
+  const auto ulps = [&](double v) { return std::nextafter(v, v + static_cast<double>(rng() % 7) - 3); };
+  p.rings.push_back({{x0, y0}, {ulps(x0 + dx), ulps(y0 + dy)}, {x0 + 0.5 * dx + 1e-15 * u(rng), y0 + 0.5 * dy}});
+  return p;
+}
+
+// A star-shaped ring of n vertices at random angles and radii about c (bench's star).
+Polygon random_star(std::mt19937_64& rng, int n, Point c) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> angles(static_cast<std::size_t>(n));
+  for (auto& a : angles) a = 2 * std::numbers::pi * u(rng);
+  std::sort(angles.begin(), angles.end());
+  Polygon p;
+  p.rings.emplace_back();
+  for (const double a : angles) {
+    const double radius = 50 + 50 * u(rng);
+    p.rings.back().push_back({c.x + radius * std::cos(a), c.y + radius * std::sin(a)});
+  }
+  return p;
+}
+
+std::vector<std::vector<Point>> round_result(const BooleanResult<ExactKernel>& r) {
+  std::vector<std::vector<Point>> out;
+  for (const auto& c : r.cycles) {
+    out.emplace_back();
+    for (const int id : c.vertices) out.back().push_back(ExactKernel::approx(r.vertex(id)));
+  }
+  return out;
+}
+
+struct Verdicts {
+  bool grid = false;       // the certificate, pairs from the grid
+  bool all_pairs = false;  // the certificate, every pair
+  bool full = false;       // the full OGC check of the rounded polygons
+};
+
+Verdicts verdicts(const BooleanResult<ExactKernel>& r, bool with_all_pairs, unsigned threads = 1) {
+  const auto rounded = round_result(r);
+  const auto polygon_cycles = result_polygon_cycles(r);
+  std::vector<RoundedVertexBox> boxes;
+  std::vector<std::array<int, 2>> edges;
+  detail::rounded_vertex_boxes(r, rounded, polygon_cycles, boxes, edges);
+  Verdicts v;
+  v.grid = detail::boxes_keep_topology(boxes, edges, false, threads);
+  v.all_pairs = with_all_pairs && detail::boxes_keep_topology(boxes, edges, true);
+  MultiPolygon polygons;
+  for (const auto& cycles : polygon_cycles) {
+    OgcPolygon p{rounded[static_cast<std::size_t>(cycles[0])], {}};
+    for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(rounded[static_cast<std::size_t>(cycles[h])]);
+    polygons.push_back(std::move(p));
+  }
+  v.full = check_ogc_validity<ExactKernel>(polygons).valid();
+  return v;
+}
+
+TEST(RoundingBoxes, NeverCertifiesWhatTheFullCheckFindsInvalid) {
+  std::mt19937_64 rng(test_seed(17));
+  int certified = 0, refused_invalid = 0, refused_valid = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const bool degenerate = i % 2 == 0;
+    const Polygon a = random_triangle(rng, degenerate);
+    const Polygon b = random_triangle(rng, degenerate);
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference, Operation::symmetric_difference}) {
+      Options opt;
+      opt.op = op;
+      opt.regular = i % 3 != 0;
+      BooleanResult<ExactKernel> r;
+      try {
+        r = boolean_op<ExactKernel>(a, b, opt);
+      } catch (const InvalidInput&) {
+        continue;  // a triangle collapsed to a segment
+      }
+      const Verdicts v = verdicts(r, true);
+      ASSERT_EQ(v.grid, v.all_pairs) << "case " << i << " op " << operation_name(op);
+      ASSERT_TRUE(!v.grid || v.full) << "case " << i << " op " << operation_name(op);
+      // What to_output reports: the certificates, then the full check.
+      bool collapsed = false;  // a two-sided part rounded to one point
+      for (const auto& c : r.cycles) {
+        collapsed = collapsed || (c.vertices.size() == 2 && ExactKernel::approx(r.vertex(c.vertices[0])) ==
+                                                                 ExactKernel::approx(r.vertex(c.vertices[1])));
+      }
+      ASSERT_EQ((to_output<ExactKernel, ExactKernel>(r, false).rounded_valid), std::optional<bool>(v.full && !collapsed))
+          << "case " << i << " op " << operation_name(op);
+      (v.grid ? certified : v.full ? refused_valid : refused_invalid) += 1;
+    }
+  }
+  std::printf("certified %d, refused and invalid %d, refused and valid %d\n", certified, refused_invalid, refused_valid);
+  EXPECT_GT(refused_invalid, 50);  // the near-degenerate cases do break under rounding
+  EXPECT_GT(certified, 2000);
+}
+
+// Shared edges and touching corners, regular and not: nothing moves, and the certificate's
+// verdict must be the full check's (the exact result is valid: its precondition).
+TEST(RoundingBoxes, TouchingShapesAgreeWithTheFullCheck) {
+  const auto square = [](double x0, double y0, double x1, double y1) {
+    Polygon p;
+    p.rings.push_back({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+    return p;
+  };
+  const Polygon shapes[] = {square(0, 0, 2, 2), square(2, 0, 4, 2), square(2, 2, 4, 4), square(0, 0, 1, 1),
+                            square(1, 0, 2, 1), square(0.5, 0.5, 1.5, 1.5), square(0, 0, 2, 1)};
+  for (const Polygon& a : shapes) {
+    for (const Polygon& b : shapes) {
+      for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference, Operation::symmetric_difference}) {
+        for (const bool regular : {true, false}) {
+          Options opt;
+          opt.op = op;
+          opt.regular = regular;
+          const Verdicts v = verdicts(boolean_op<ExactKernel>(a, b, opt), true);
+          EXPECT_EQ(v.grid, v.all_pairs);
+          EXPECT_EQ(v.grid, v.full) << operation_name(op) << (regular ? "" : " (non-regular)");
+        }
+      }
+    }
+  }
+}
+
+// Many input points and few crossings (the certificate then lists the edges at crossings
+// in the grid and each still vertex looks in its cell): a ring of 2000 points crossed by a
+// triangle whose edge passes a few ulps from one of them, or through it.
+TEST(RoundingBoxes, FewCrossingsAmongManyPointsAgreeWithAllPairs) {
+  std::mt19937_64 rng(test_seed(53));
+  std::uniform_real_distribution<double> u(0, 1);
+  int certified = 0, refused = 0;
+  for (int i = 0; i < 60; ++i) {
+    Polygon ring;
+    ring.rings.emplace_back();
+    const int n = 2000;
+    for (int k = 0; k < n; ++k) {
+      const double t = 2 * std::numbers::pi * k / n;
+      const double radius = 10 * (1 + 0.05 * u(rng));
+      ring.rings.back().push_back({radius * std::cos(t), radius * std::sin(t)});
+    }
+    const Point near = ring.rings.back()[static_cast<std::size_t>(rng() % n)];
+    const int ulps = static_cast<int>(rng() % 9) - 4;
+    Point through = near;
+    for (int k = 0; k < std::abs(ulps); ++k) through.y = std::nextafter(through.y, ulps > 0 ? HUGE_VAL : -HUGE_VAL);
+    Polygon tri;
+    // The edge far -> inside passes `through` (up to its own rounding).
+    const Point d{2 * near.x + 0.37, 2 * near.y - 0.11};
+    const Point far{through.x + d.x, through.y + d.y}, inside{through.x - 0.5 * d.x, through.y - 0.5 * d.y};
+    tri.rings.push_back({far, inside, {inside.x + 0.3, inside.y - 0.2}});
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference}) {
+      Options opt;
+      opt.op = op;
+      BooleanResult<ExactKernel> r;
+      try {
+        r = boolean_op<ExactKernel>(ring, tri, opt);
+      } catch (const InvalidInput&) {
+        continue;
+      }
+      const Verdicts v = verdicts(r, true);
+      ASSERT_EQ(v.grid, v.all_pairs) << "case " << i << " op " << operation_name(op);
+      ASSERT_TRUE(!v.grid || v.full) << "case " << i << " op " << operation_name(op);
+      (v.grid ? certified : refused) += 1;
+    }
+  }
+  std::printf("certified %d, refused %d\n", certified, refused);
+  EXPECT_GT(certified, 0);
+}
+
+TEST(RoundingBoxes, StarsAreCertifiedOnAnyNumberOfThreads) {
+  std::mt19937_64 rng(test_seed(41));
+  for (const int n : {300, 3000}) {
+    const Polygon a = random_star(rng, n, {0, 0});
+    const Polygon b = random_star(rng, n, {30, 10});
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference}) {
+      Options opt;
+      opt.op = op;
+      const BooleanResult<ExactKernel> r = boolean_op<ExactKernel>(a, b, opt);
+      const Verdicts one = verdicts(r, n <= 300);
+      EXPECT_TRUE(one.full);
+      EXPECT_TRUE(one.grid) << "n " << n << " op " << operation_name(op);
+      if (n <= 300) {
+        EXPECT_TRUE(one.all_pairs);
+      }
+      EXPECT_EQ(verdicts(r, false, 2).grid, one.grid);
+      std::printf("n %d %s: %d crossings\n", n, std::string(operation_name(op)).c_str(), static_cast<int>(r.stats.crossings));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mk
