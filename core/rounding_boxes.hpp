@@ -189,8 +189,10 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   // The cells an edge's hull may meet, each once: the edge cut into pieces about one cell
   // long, each piece's box widened by the hull's half-sizes and by the error of computing
   // the piece's ends (u + t (w - u): at most 16 eps (|u| + |w|) per coordinate). f(cell)
-  // returns false to stop; so does this.
-  const auto for_each_cell = [&](const std::array<int, 2>& e, auto&& f) {
+  // returns false to stop; so does this, when `steps` (every cell looked at, the ones already
+  // visited included: a shallow crossing's wide box can make each piece span the grid)
+  // passes `limit`.
+  const auto for_each_cell = [&](const std::array<int, 2>& e, auto&& f, std::size_t& steps, std::size_t limit) {
     const auto& a = v[static_cast<std::size_t>(e[0])];
     const auto& b = v[static_cast<std::size_t>(e[1])];
     const Point u = a.at, w = b.at;
@@ -207,6 +209,7 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
       const int r0 = grid.row(below(std::min(p.y, q.y) - my)), r1 = grid.row(above(std::max(p.y, q.y) + my));
       for (int r = r0; r <= r1; ++r) {
         for (int c = c0; c <= c1; ++c) {
+          if (++steps > limit) return false;
           if (pc0 <= c && c <= pc1 && pr0 <= r && r <= pr1) continue;
           if (!f(static_cast<std::size_t>(grid.cell(c, r)))) return false;
         }
@@ -266,7 +269,7 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   const std::size_t part_budget = budget / parts;
   std::atomic<bool> refused{false};
   run_tasks(threads, parts, [&](std::size_t part) {
-    std::size_t work = 0;
+    std::size_t work = 0, steps = 0;
     const std::size_t first = edges.size() * part / parts, last = edges.size() * (part + 1) / parts;
     for (std::size_t i = first; i < last && !refused.load(std::memory_order_relaxed); ++i) {
       const auto& e = edges[i];
@@ -278,7 +281,7 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
           if (!clear(in_cell[static_cast<std::size_t>(k)], e)) return false;
         }
         return work <= part_budget;
-      });
+      }, steps, part_budget);
       if (!ok) refused = true;
     }
   });
@@ -286,14 +289,14 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   // The vertices that did not move against the edges with a moved end, listed in the cells
   // they visit; a vertex's box is its point, in one cell.
   std::vector<int> edge_start(cells + 1, 0);
-  std::size_t edge_entries = 0;
+  std::size_t edge_entries = 0, edge_steps = 0;
   for (const auto& e : edges) {
     if (!moved(e[0]) && !moved(e[1])) continue;
-    for_each_cell(e, [&](std::size_t cell) {
+    const bool ok = for_each_cell(e, [&](std::size_t cell) {
       ++edge_start[cell + 1];
       return ++edge_entries <= budget;
-    });
-    if (edge_entries > budget) return false;
+    }, edge_steps, budget);
+    if (!ok) return false;
   }
   for (std::size_t i = 1; i < edge_start.size(); ++i) edge_start[i] += edge_start[i - 1];
   std::vector<int> edge_in_cell(edge_entries);
@@ -302,10 +305,11 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     for (std::size_t i = 0; i < edges.size(); ++i) {
       const auto& e = edges[i];
       if (!moved(e[0]) && !moved(e[1])) continue;
+      std::size_t steps = 0;  // the same cells as the count above, which stayed within the budget
       for_each_cell(e, [&](std::size_t cell) {
         edge_in_cell[static_cast<std::size_t>(fill[cell]++)] = static_cast<int>(i);
         return true;
-      });
+      }, steps, std::numeric_limits<std::size_t>::max());
     }
   }
   const std::size_t vertex_parts = threads > 1 && v.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
