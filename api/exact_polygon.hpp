@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 #include "arithmetic/kernels/rational_kernel.hpp"
 #include "arithmetic/nearest_double.hpp"
@@ -19,6 +20,20 @@ namespace mk {
 
 using ExactRing = BasicRing<RationalPoint>;
 using ExactPolygon = BasicPolygon<RationalPoint>;
+
+// The polygon with every point mapped by f (same type, same rings), e.g. to another
+// coordinate type.
+template <class P, class F>
+auto map_points(const BasicPolygon<P>& p, F&& f) {
+  BasicPolygon<std::remove_cvref_t<decltype(f(p.rings.front().front()))>> out;
+  out.type = p.type;
+  for (const auto& ring : p.rings) {
+    auto& r = out.rings.emplace_back();
+    r.reserve(ring.size());
+    for (const auto& q : ring) r.push_back(f(q));
+  }
+  return out;
+}
 
 // The polygon as doubles when every coordinate is exactly a double, else nullopt.
 inline std::optional<Polygon> as_double_polygon(const ExactPolygon& p) {
@@ -39,24 +54,12 @@ inline std::optional<Polygon> as_double_polygon(const ExactPolygon& p) {
 
 // Each coordinate rounded to its nearest double (for messages and pictures).
 inline Polygon nearest_polygon(const ExactPolygon& p) {
-  Polygon out;
-  out.type = p.type;
-  for (const auto& ring : p.rings) {
-    auto& r = out.rings.emplace_back();
-    for (const auto& q : ring) r.push_back({nearest_double(q.x), nearest_double(q.y)});
-  }
-  return out;
+  return map_points(p, [](const RationalPoint& q) { return Point{nearest_double(q.x), nearest_double(q.y)}; });
 }
 
 // Doubles taken exactly.
 inline ExactPolygon exact_polygon(const Polygon& p) {
-  ExactPolygon out;
-  out.type = p.type;
-  for (const auto& ring : p.rings) {
-    auto& r = out.rings.emplace_back();
-    for (const auto& q : ring) r.push_back({mpq_class(q.x), mpq_class(q.y)});
-  }
-  return out;
+  return map_points(p, [](const Point& q) { return RationalPoint{mpq_class(q.x), mpq_class(q.y)}; });
 }
 
 // Throws InvalidInput when a coordinate of `p` (named `name` in the message) lies beyond the

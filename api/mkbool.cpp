@@ -62,13 +62,7 @@ Q rational_as(const mpq_class& v) {
 template <Kernel K>
 BasicPolygon<typename K::Point> kernel_polygon(const ExactPolygon& p) {
   using Q = decltype(std::declval<typename K::Point>().x);
-  BasicPolygon<typename K::Point> out;
-  out.type = p.type;
-  for (const auto& ring : p.rings) {
-    out.rings.emplace_back();
-    for (const auto& v : ring) out.rings.back().push_back({rational_as<Q>(v.x), rational_as<Q>(v.y)});
-  }
-  return out;
+  return map_points(p, [](const RationalPoint& v) { return typename K::Point{rational_as<Q>(v.x), rational_as<Q>(v.y)}; });
 }
 
 // P is Point (doubles) or RationalPoint (exact rationals, run by an exact kernel on its own

@@ -12,37 +12,16 @@
 #include "arithmetic/kernels/exact_kernel.hpp"
 #include "core/boolean_op.hpp"
 #include "core/to_output.hpp"
+#include "tests/core/rounding_cases.hpp"
 
 namespace mk {
 namespace {
 
+using test::random_triangle;
+using test::round_result;
+
 // Full check: the general function over the rounded rings (sort, sweep).
 bool full_check(const std::vector<std::vector<Point>>& rounded) { return is_valid_rounded_output<ExactKernel>(rounded); }
-
-std::vector<std::vector<Point>> round_result(const BooleanResult<ExactKernel>& r) {
-  std::vector<std::vector<Point>> out;
-  for (const auto& c : r.cycles) {
-    out.emplace_back();
-    for (const int id : c.vertices) out.back().push_back(ExactKernel::approx(r.vertex(id)));
-  }
-  return out;
-}
-
-// Triangles of nearly collinear points a few ulps apart (whose crossings often round onto
-// each other's edges) and plain random triangles.
-Polygon random_triangle(std::mt19937_64& rng, bool near_degenerate) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  Polygon p;
-  if (!near_degenerate) {
-    p.rings.push_back({{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}});
-    return p;
-  }
-  const double x0 = u(rng), y0 = u(rng);
-  const double dx = u(rng), dy = u(rng);
-  const auto ulps = [&](double v) { return std::nextafter(v, v + static_cast<double>(rng() % 7) - 3); };
-  p.rings.push_back({{x0, y0}, {ulps(x0 + dx), ulps(y0 + dy)}, {x0 + 0.5 * dx + 1e-15 * u(rng), y0 + 0.5 * dy}});
-  return p;
-}
 
 TEST(RoundedValidity, LocalCheckAgreesWithTheFullSweep) {
   const char* env = std::getenv("MK_TEST_SEED");

@@ -21,9 +21,13 @@
 #include "core/ogc_validity.hpp"
 #include "core/rounding_boxes.hpp"
 #include "core/to_output.hpp"
+#include "tests/core/rounding_cases.hpp"
 
 namespace mk {
 namespace {
+
+using test::random_triangle;
+using test::round_result;
 
 using detail::RoundedVertexBox;
 
@@ -108,20 +112,6 @@ TEST(RoundingBoxes, SeparationIsNeverClaimedForBoxesThatMeet) {
   EXPECT_GT(far_cleared, far * 9 / 10);  // the margins cost nothing visible at 1e-9
 }
 
-Polygon random_triangle(std::mt19937_64& rng, bool near_degenerate) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  Polygon p;
-  if (!near_degenerate) {
-    p.rings.push_back({{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}});
-    return p;
-  }
-  const double x0 = u(rng), y0 = u(rng);
-  const double dx = u(rng), dy = u(rng);
-  const auto ulps = [&](double v) { return std::nextafter(v, v + static_cast<double>(rng() % 7) - 3); };
-  p.rings.push_back({{x0, y0}, {ulps(x0 + dx), ulps(y0 + dy)}, {x0 + 0.5 * dx + 1e-15 * u(rng), y0 + 0.5 * dy}});
-  return p;
-}
-
 // A star-shaped ring of n vertices at random angles and radii about c (bench's star).
 Polygon random_star(std::mt19937_64& rng, int n, Point c) {
   std::uniform_real_distribution<double> u(0, 1);
@@ -135,15 +125,6 @@ Polygon random_star(std::mt19937_64& rng, int n, Point c) {
     p.rings.back().push_back({c.x + radius * std::cos(a), c.y + radius * std::sin(a)});
   }
   return p;
-}
-
-std::vector<std::vector<Point>> round_result(const BooleanResult<ExactKernel>& r) {
-  std::vector<std::vector<Point>> out;
-  for (const auto& c : r.cycles) {
-    out.emplace_back();
-    for (const int id : c.vertices) out.back().push_back(ExactKernel::approx(r.vertex(id)));
-  }
-  return out;
 }
 
 struct Verdicts {

@@ -49,21 +49,34 @@ ExactPolygon shifted(const Polygon& a) {
 
 Region scaled(const Region& r, const Frame& f) { return f.to_cgal(r); }
 
-TEST(ExactChain, TwoCallsThroughExactResultsEqualCgalOnTheChain) {
+// MK_CHAIN_CASES, or the test's own count; `share` divides the variable's value.
+int chain_cases(int fallback, int share = 1) {
   const char* env = std::getenv("MK_CHAIN_CASES");
-  const int cases = env ? std::atoi(env) : 300;
+  return env ? std::atoi(env) / share : fallback;
+}
+
+Operation random_operation(std::mt19937_64& rng) {
+  constexpr Operation ops[] = {Operation::intersection, Operation::union_, Operation::difference,
+                               Operation::symmetric_difference};
+  return ops[rng() % 4];
+}
+
+std::string chain_name(int i, const GeneratedPair& pair, Operation op1, Operation op2) {
+  return "chain " + std::to_string(i) + " (" + pair.family + ", " + pair.transform + "): (A " +
+         std::string(operation_name(op1)) + " B) " + std::string(operation_name(op2)) + " C";
+}
+
+TEST(ExactChain, TwoCallsThroughExactResultsEqualCgalOnTheChain) {
+  const int cases = chain_cases(300);
   const std::uint64_t seed = 12;
   std::mt19937_64 rng(seed);
   std::printf("exact chain: seed %llu, %d chains\n", static_cast<unsigned long long>(seed), cases);
-  const Operation ops[] = {Operation::intersection, Operation::union_, Operation::difference,
-                           Operation::symmetric_difference};
   int exact_inputs = 0, compared = 0;
   for (int i = 0; i < cases; ++i) {
     const GeneratedPair pair = random_pair(static_cast<std::size_t>(i), rng);
-    const Operation op1 = ops[rng() % 4], op2 = ops[rng() % 4];
+    const Operation op1 = random_operation(rng), op2 = random_operation(rng);
     const ExactPolygon c = shifted(pair.a);
-    const std::string what = "chain " + std::to_string(i) + " (" + pair.family + ", " + pair.transform + "): (A " +
-                             std::string(operation_name(op1)) + " B) " + std::string(operation_name(op2)) + " C; A " +
+    const std::string what = chain_name(i, pair, op1, op2) + "; A " +
                              describe(pair.a) + " B " + describe(pair.b);
     BooleanOptions o;
     o.exact_coordinates = true;
@@ -125,24 +138,20 @@ TEST(ExactChain, ExactResultKeepsTheRegion) {
 // samples around every vertex, crossing and edge of A, B and the result), and the second
 // operation on it must be what its definition says.
 TEST(ExactChain, NonRegularResultsAreFedBackAsTheirPointSets) {
-  const char* env = std::getenv("MK_CHAIN_CASES");
-  const int cases = env ? std::atoi(env) / 2 : 150;
+  const int cases = chain_cases(150, 2);
   const std::uint64_t seed = 13;
   std::mt19937_64 rng(seed);
   std::printf("non-regular chain: seed %llu, %d chains\n", static_cast<unsigned long long>(seed), cases);
-  const Operation ops[] = {Operation::intersection, Operation::union_, Operation::difference,
-                           Operation::symmetric_difference};
   int with_degenerate = 0, unbounded_refused = 0;
   for (int i = 0; i < cases; ++i) {
     const GeneratedPair pair = random_pair(static_cast<std::size_t>(i), rng);
-    const Operation op1 = ops[rng() % 4], op2 = ops[rng() % 4];
+    const Operation op1 = random_operation(rng), op2 = random_operation(rng);
     // C is island-type: the oracle reads a hole-type polygon whose rings share an edge as
     // containing that edge, which the core (and A − int(B) in the brief) does not; that
     // question is the oracle's, not the feeding back's (issue 12's note).
     ExactPolygon c = shifted(pair.b);
     c.type = PolygonType::island;
-    const std::string what = "chain " + std::to_string(i) + " (" + pair.family + ", " + pair.transform + "): (A " +
-                             std::string(operation_name(op1)) + " B) " + std::string(operation_name(op2)) + " C";
+    const std::string what = chain_name(i, pair, op1, op2);
     BooleanOptions o;
     o.exact_coordinates = true;
     o.area = false;
