@@ -160,11 +160,28 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   for (const auto& b : v) {
     if (!std::isfinite(b.rx) || !std::isfinite(b.ry)) return false;
   }
-  std::size_t num_moved = 0, moved_edges = 0;
+  std::size_t num_moved = 0;
   for (std::size_t k = 0; k < v.size(); ++k) num_moved += moved(static_cast<int>(k));
-  for (const auto& [a, b] : edges) {
-    if (!ends_apart(v[static_cast<std::size_t>(a)], v[static_cast<std::size_t>(b)])) return false;
-    moved_edges += moved(a) || moved(b);
+  // Every edge keeps two ends apart, and how many edges have a moved end (in parts, on the
+  // threads).
+  std::size_t moved_edges = 0;
+  {
+    const std::size_t parts = threads > 1 && edges.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
+    std::vector<std::size_t> moved_in(parts, 0);
+    std::atomic<bool> apart{true};
+    run_tasks(threads, parts, [&](std::size_t part) {
+      std::size_t count = 0;
+      bool ok = true;
+      for (std::size_t i = edges.size() * part / parts, last = edges.size() * (part + 1) / parts; i < last; ++i) {
+        const auto& [a, b] = edges[i];
+        ok = ok && ends_apart(v[static_cast<std::size_t>(a)], v[static_cast<std::size_t>(b)]);
+        count += moved(a) || moved(b);
+      }
+      moved_in[part] = count;
+      if (!ok) apart = false;
+    });
+    if (!apart) return false;
+    for (const std::size_t c : moved_in) moved_edges += c;
   }
   const auto clear = [&](int k, const std::array<int, 2>& e) {
     if (k == e[0] || k == e[1]) return true;
@@ -198,6 +215,21 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     const Point u = a.at, w = b.at;
     const double mx = rounded_up(rounded_up(std::max(a.rx, b.rx) + rounded_up(0x1p-49 * (std::abs(u.x) + std::abs(w.x)))) + DBL_MIN);
     const double my = rounded_up(rounded_up(std::max(a.ry, b.ry) + rounded_up(0x1p-49 * (std::abs(u.y) + std::abs(w.y)))) + DBL_MIN);
+    // An edge whose widened box meets at most four cells visits them all (the pieces' boxes
+    // lie in it); a longer one goes piece by piece.
+    {
+      const int c0 = grid.col(below(std::min(u.x, w.x) - mx)), c1 = grid.col(above(std::max(u.x, w.x) + mx));
+      const int r0 = grid.row(below(std::min(u.y, w.y) - my)), r1 = grid.row(above(std::max(u.y, w.y) + my));
+      if ((c1 - c0 + 1) * (r1 - r0 + 1) <= 4) {
+        for (int r = r0; r <= r1; ++r) {
+          for (int c = c0; c <= c1; ++c) {
+            if (++steps > limit) return false;
+            if (!f(static_cast<std::size_t>(grid.cell(c, r)))) return false;
+          }
+        }
+        return true;
+      }
+    }
     const int pieces = std::max(std::abs(grid.col(u.x) - grid.col(w.x)), std::abs(grid.row(u.y) - grid.row(w.y))) + 1;
     const double dx = w.x - u.x, dy = w.y - u.y;
     Point p = u;
@@ -252,14 +284,25 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     if (estimate > budget) return false;
   }
   for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-  std::vector<int> in_cell(entries);
+  // Each listed vertex with a copy of its box (the cells are read in the edges' order, the
+  // boxes are stored in the cycles'), and per cell the largest half-sizes listed there.
+  struct Listed {
+    RoundedVertexBox box;
+    int k;
+  };
+  std::vector<Listed> in_cell(entries);
+  std::vector<std::array<double, 2>> cell_reach(cells, {0.0, 0.0});
   {
     std::vector<int> fill(start.begin(), start.end() - 1);
     for (std::size_t k = 0; k < v.size(); ++k) {
       if (!listed(k)) continue;
       const auto sp = span(k);
       for (int r = sp[2]; r <= sp[3]; ++r) {
-        for (int c = sp[0]; c <= sp[1]; ++c) in_cell[static_cast<std::size_t>(fill[list(k, c, r)]++)] = static_cast<int>(k);
+        for (int c = sp[0]; c <= sp[1]; ++c) {
+          in_cell[static_cast<std::size_t>(fill[list(k, c, r)]++)] = {v[k], static_cast<int>(k)};
+          auto& reach = cell_reach[static_cast<std::size_t>(grid.cell(c, r))];
+          reach = {std::max(reach[0], v[k].rx), std::max(reach[1], v[k].ry)};
+        }
       }
     }
   }
@@ -274,11 +317,24 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     for (std::size_t i = first; i < last && !refused.load(std::memory_order_relaxed); ++i) {
       const auto& e = edges[i];
       const std::size_t lists = moved(e[0]) || moved(e[1]) ? 2 : 1;  // the moved vertices, or all listed
+      const RoundedVertexBox& a = v[static_cast<std::size_t>(e[0])];
+      const RoundedVertexBox& b = v[static_cast<std::size_t>(e[1])];
+      const double x0 = std::min(a.at.x, b.at.x), x1 = std::max(a.at.x, b.at.x);
+      const double y0 = std::min(a.at.y, b.at.y), y1 = std::max(a.at.y, b.at.y);
+      const double arx = std::max(a.rx, b.rx), ary = std::max(a.ry, b.ry);
       const bool ok = for_each_cell(e, [&](std::size_t cell) {
         const int s = start[2 * cell], end = start[2 * cell + lists];
         work += 1 + static_cast<std::size_t>(end - s);
+        // clear_of_edge's first four tests with the cell's largest half-sizes: each side is
+        // monotone in the half-size, so passing here passes there, and most vertices of
+        // the cell are passed over without the rest of the test (the same verdicts).
+        const double tx = std::max(rounded_up(cell_reach[cell][0] + arx), DBL_MIN) * (1 + 0x1p-50);
+        const double ty = std::max(rounded_up(cell_reach[cell][1] + ary), DBL_MIN) * (1 + 0x1p-50);
         for (int k = s; k < end; ++k) {
-          if (!clear(in_cell[static_cast<std::size_t>(k)], e)) return false;
+          const Listed& l = in_cell[static_cast<std::size_t>(k)];
+          const Point& p = l.box.at;
+          if ((tx < x0 - p.x) | (tx < p.x - x1) | (ty < y0 - p.y) | (ty < p.y - y1) | (l.k == e[0]) | (l.k == e[1])) continue;
+          if (!clear_of_edge(l.box, a, b)) return false;
         }
         return work <= part_budget;
       }, steps, part_budget);
@@ -335,23 +391,36 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
 
 }  // namespace detail
 
+// Per cycle, per vertex: the half-sizes (x, y) of a box about the vertex's rounded point
+// that holds its exact position, made while rounding (the vertex is at hand then).
+using RoundingHalves = std::vector<std::vector<std::array<double, 2>>>;
+
 namespace detail {
 
-// The certificate's vertices (each once, with its box) and the polygons' edges between them.
+// The half-sizes for vertex `id` of r (the value v) rounded to `at`: none for an input point
+// of doubles (it rounds to itself), else the kernel's box about `at` (`at` lies in the box
+// when rounded to nearest).
+template <VertexBoxes K>
+std::array<double, 2> rounding_half_sizes(const BooleanResult<K>& r, int id, const typename K::Vertex& v, const Point& at) {
+  if (std::is_same_v<typename K::Point, Point> && r.arrangement.is_input_point(id)) return {0.0, 0.0};
+  const auto half = [](double p, double lo, double hi) { return rounded_up(std::max({p - lo, hi - p, 0.0})); };
+  const std::array<double, 4> box = K::vertex_box(v);  // x0, y0, x1, y1
+  return {half(at.x, box[0], box[2]), half(at.y, box[1], box[3])};
+}
+
+// The certificate's vertices (each once, with its box) and the polygons' edges between them;
+// the half-sizes from `halves` when given (see rounded_cycles), else from the kernel.
 template <VertexBoxes K>
 void rounded_vertex_boxes(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
                           const std::vector<std::vector<int>>& polygon_cycles, std::vector<RoundedVertexBox>& boxes,
-                          std::vector<std::array<int, 2>>& edges) {
+                          std::vector<std::array<int, 2>>& edges, const RoundingHalves* halves = nullptr) {
   std::vector<int> slot(static_cast<std::size_t>(r.arrangement.num_vertices()), -1);
-  constexpr bool doubles_in = std::is_same_v<typename K::Point, Point>;
   std::size_t total = 0;
   for (const auto& cycles : polygon_cycles) {
     for (const int c : cycles) total += r.cycles[static_cast<std::size_t>(c)].vertices.size();
   }
   boxes.reserve(total);
   edges.reserve(total);
-  // Half of the box's extent about the rounded point p (p lies in it when rounded to nearest).
-  const auto half = [](double p, double lo, double hi) { return rounded_up(std::max({p - lo, hi - p, 0.0})); };
   for (const auto& cycles : polygon_cycles) {
     for (const int c : cycles) {
       const auto& ids = r.cycles[static_cast<std::size_t>(c)].vertices;
@@ -361,12 +430,9 @@ void rounded_vertex_boxes(const BooleanResult<K>& r, const std::vector<std::vect
         if (s >= 0) continue;
         s = static_cast<int>(boxes.size());
         const Point at = rounded[static_cast<std::size_t>(c)][k];
-        if (doubles_in && r.arrangement.is_input_point(ids[k])) {  // an input double rounds to itself
-          boxes.push_back({at, 0, 0});
-          continue;
-        }
-        const std::array<double, 4> box = K::vertex_box(r.vertex(ids[k]));  // x0, y0, x1, y1
-        boxes.push_back({at, half(at.x, box[0], box[2]), half(at.y, box[1], box[3])});
+        const std::array<double, 2> h = halves && !halves->empty() ? (*halves)[static_cast<std::size_t>(c)][k]
+                                                                    : rounding_half_sizes(r, ids[k], r.vertex(ids[k]), at);
+        boxes.push_back({at, h[0], h[1]});
       }
       for (std::size_t k = 0; k < n; ++k) {
         edges.push_back({slot[static_cast<std::size_t>(ids[k])], slot[static_cast<std::size_t>(ids[(k + 1) % n])]});
@@ -381,10 +447,11 @@ void rounded_vertex_boxes(const BooleanResult<K>& r, const std::vector<std::vect
 // cycles' rounded vertices: true when it proves the rounded polygons valid.
 template <VertexBoxes K>
 bool rounding_boxes_keep_topology(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
-                                  const std::vector<std::vector<int>>& polygon_cycles, unsigned threads = 1) {
+                                  const std::vector<std::vector<int>>& polygon_cycles, unsigned threads = 1,
+                                  const RoundingHalves* halves = nullptr) {
   std::vector<detail::RoundedVertexBox> boxes;
   std::vector<std::array<int, 2>> edges;
-  detail::rounded_vertex_boxes(r, rounded, polygon_cycles, boxes, edges);
+  detail::rounded_vertex_boxes(r, rounded, polygon_cycles, boxes, edges, halves);
   return detail::boxes_keep_topology(boxes, edges, false, threads);
 }
 

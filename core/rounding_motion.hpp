@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <vector>
 
@@ -102,103 +103,160 @@ bool rounding_keeps_topology(const BooleanResult<K>& r, const std::vector<std::v
       x1 = std::max(x1, detail::next_up(p.x));
       y1 = std::max(y1, detail::next_up(p.y));
     }
+    void add(const Box& o) { x0 = std::min(x0, o.x0), y0 = std::min(y0, o.y0), x1 = std::max(x1, o.x1), y1 = std::max(y1, o.y1); }
     bool meets(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
   };
-  // Each vertex once: its exact and rounded positions.
-  std::vector<int> slot(static_cast<std::size_t>(r.arrangement.num_vertices()), -1);
-  std::vector<int> ids;
-  std::vector<Point> at;
-  std::vector<char> moved;
-  struct Edge {
-    int a, b;  // slots
+  // Nothing is made per vertex that did not move (a result of 10^5 input points and two
+  // crossings spent most of this certificate's time numbering and copying them): the
+  // vertices that may move are the crossings when the input is doubles (input points round
+  // to themselves), every vertex otherwise; each is compared exactly once, its state kept
+  // in an array over those ids (0 not seen, 1 still, 2 moved).
+  constexpr bool doubles_in = std::is_same_v<typename K::Point, Point>;
+  const int first_movable = doubles_in ? r.arrangement.num_points() : 0;
+  std::vector<char> state(static_cast<std::size_t>(r.arrangement.num_vertices() - first_movable), 0);
+  const auto moved = [&](int id) { return id >= first_movable && state[static_cast<std::size_t>(id - first_movable)] == 2; };
+  struct Moved {
+    int id;
+    Point at;  // rounded
+    Box box;
   };
-  std::vector<Edge> edges;
+  std::vector<Moved> moved_vertices;
+  std::vector<std::array<std::size_t, 2>> moved_at;  // (cycle, index) of each moved vertex's places
+  // Exact comparisons (GMP for crossings whose box holds their rounded point, nearly all),
+  // stopped as soon as too many vertices moved: on a result of 10^5 crossings they would
+  // cost more than the operation.
   for (std::size_t c = 0; c < r.cycles.size(); ++c) {
     const auto& cyc = r.cycles[c].vertices;
     for (std::size_t k = 0; k < cyc.size(); ++k) {
       const int id = cyc[k];
-      if (slot[static_cast<std::size_t>(id)] < 0) {
-        slot[static_cast<std::size_t>(id)] = static_cast<int>(ids.size());
-        ids.push_back(id);
-        at.push_back(rounded[c][k]);
-        // Input points of doubles stay; the others are compared exactly below.
-        moved.push_back(!r.arrangement.is_input_point(id) || !std::is_same_v<typename K::Point, Point>);
-      }
+      if (id < first_movable) continue;
+      char& s = state[static_cast<std::size_t>(id - first_movable)];
+      if (s == 2) moved_at.push_back({c, k});
+      if (s != 0) continue;
+      const Point& at = rounded[c][k];
+      s = K::compare_vertices(K::vertex(K::point(at)), r.vertex(id)) != Sign::zero ? 2 : 1;
+      if (s == 1) continue;
+      Box b;
+      b.add(at);
+      moved_vertices.push_back({id, at, b});
+      moved_at.push_back({c, k});
+      if (moved_vertices.size() > max_moved) return false;
     }
-    if (cyc.size() < 2) continue;
-    for (std::size_t k = 0; k < (cyc.size() == 2 ? 1 : cyc.size()); ++k) {
-      edges.push_back({slot[static_cast<std::size_t>(cyc[k])], slot[static_cast<std::size_t>(cyc[(k + 1) % cyc.size()])]});
-    }
-  }
-  // Exact comparisons (GMP for crossings whose box holds their rounded point, nearly all),
-  // stopped as soon as too many vertices moved: on a result of 10^5 crossings they would
-  // cost more than the operation.
-  std::vector<int> moved_vertices;
-  for (std::size_t v = 0; v < ids.size(); ++v) {
-    if (!moved[v]) continue;
-    moved[v] = K::compare_vertices(K::vertex(K::point(at[v])), r.vertex(ids[v])) != Sign::zero;
-    if (moved[v]) moved_vertices.push_back(static_cast<int>(v));
-    if (moved_vertices.size() > max_moved) return false;
   }
   if (moved_vertices.empty()) return true;
-  std::vector<int> moved_edges;
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (moved[static_cast<std::size_t>(edges[e].a)] || moved[static_cast<std::size_t>(edges[e].b)]) moved_edges.push_back(static_cast<int>(e));
+  // The edges of each cycle (a two-vertex cycle has one), as ids and rounded ends.
+  struct Edge {
+    int a, b;
+    Point pa, pb;
+    Box box() const {
+      Box x;
+      x.add(pa);
+      x.add(pb);
+      return x;
+    }
+  };
+  const auto edge_at = [&](std::size_t c, std::size_t k) {
+    const auto& cyc = r.cycles[c].vertices;
+    const std::size_t l = k + 1 == cyc.size() ? 0 : k + 1;
+    return Edge{cyc[k], cyc[l], rounded[c][k], rounded[c][l]};
+  };
+  // The edges with a moved end: those starting at or ending at a moved vertex's places (each
+  // once; a two-vertex cycle's one edge starts at its first place).
+  std::vector<std::array<std::size_t, 2>> starts;
+  for (const auto& [c, k] : moved_at) {
+    const std::size_t n = r.cycles[c].vertices.size();
+    if (n < 2) continue;
+    if (n == 2) {
+      starts.push_back({c, 0});
+      continue;
+    }
+    starts.push_back({c, k});
+    starts.push_back({c, k == 0 ? n - 1 : k - 1});
   }
-  if (moved_vertices.size() + moved_edges.size() > max_moved) return false;
+  std::sort(starts.begin(), starts.end());
+  starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+  if (moved_vertices.size() + starts.size() > max_moved) return false;
+  std::vector<Edge> moved_edges;
+  std::vector<Box> moved_edge_box;
+  Box all;
+  for (const Moved& m : moved_vertices) all.add(m.box);
+  for (const auto& [c, k] : starts) {
+    moved_edges.push_back(edge_at(c, k));
+    moved_edge_box.push_back(moved_edges.back().box());
+    all.add(moved_edge_box.back());
+  }
 
-  const auto exact = [&](int v) { return r.vertex(ids[static_cast<std::size_t>(v)]); };
-  const auto final_pos = [&](int v) { return K::vertex(K::point(at[static_cast<std::size_t>(v)])); };
-  const auto vertex_box = [&](int v) {
-    Box b;
-    b.add(at[static_cast<std::size_t>(v)]);
-    return b;
-  };
-  const auto edge_box = [&](const Edge& e) {
-    Box b = vertex_box(e.a);
-    const Box o = vertex_box(e.b);
-    b.x0 = std::min(b.x0, o.x0), b.y0 = std::min(b.y0, o.y0), b.x1 = std::max(b.x1, o.x1), b.y1 = std::max(b.y1, o.y1);
-    return b;
-  };
+  const auto final_pos = [&](const Point& at) { return K::vertex(K::point(at)); };
   // The positions an item occupies during the motion: a vertex's path, an edge's hull.
-  const auto path_meets_edge = [&](int v, const Edge& e) {
-    std::vector<typename K::Vertex> hull{exact(e.a), exact(e.b)};
-    if (moved[static_cast<std::size_t>(e.a)]) hull.push_back(final_pos(e.a));
-    if (moved[static_cast<std::size_t>(e.b)]) hull.push_back(final_pos(e.b));
-    const auto p = exact(v);
-    const auto q = moved[static_cast<std::size_t>(v)] ? final_pos(v) : p;
+  const auto path_meets_edge = [&](int v, const Point& v_at, const Edge& e) {
+    std::vector<typename K::Vertex> hull{r.vertex(e.a), r.vertex(e.b)};
+    if (moved(e.a)) hull.push_back(final_pos(e.pa));
+    if (moved(e.b)) hull.push_back(final_pos(e.pb));
+    const auto p = r.vertex(v);
+    const auto q = moved(v) ? final_pos(v_at) : p;
     return detail::segment_meets_hull<K>(p, q, hull);
   };
-  Box all;
-  std::vector<Box> moved_vertex_box, moved_edge_box;
-  for (const int v : moved_vertices) {
-    moved_vertex_box.push_back(vertex_box(v));
-    const Box& b = moved_vertex_box.back();
-    all.x0 = std::min(all.x0, b.x0), all.y0 = std::min(all.y0, b.y0), all.x1 = std::max(all.x1, b.x1), all.y1 = std::max(all.y1, b.y1);
-  }
-  for (const int e : moved_edges) {
-    moved_edge_box.push_back(edge_box(edges[static_cast<std::size_t>(e)]));
-    const Box& b = moved_edge_box.back();
-    all.x0 = std::min(all.x0, b.x0), all.y0 = std::min(all.y0, b.y0), all.x1 = std::max(all.x1, b.x1), all.y1 = std::max(all.y1, b.y1);
-  }
-  for (const Edge& f : edges) {
-    const Box fb = edge_box(f);
-    if (!fb.meets(all)) continue;
+  // Every edge against the moved items; an edge's box widened by an ulp meets `all` exactly
+  // when the box of its rounded ends meets `all` widened by one more ulp, so most edges are
+  // passed over by four comparisons and no ulp step.
+  const double ax0 = detail::next_down(all.x0), ay0 = detail::next_down(all.y0);
+  const double ax1 = detail::next_up(all.x1), ay1 = detail::next_up(all.y1);
+  // Whether the edge from p to q misses every moved item's box (each widened by an ulp): the
+  // rounded points alone decide it, so the ids are read only for the edges near an item.
+  // The items mark the cells of a small grid over `all` (cell indices are monotone in the
+  // coordinates, so boxes that meet have cell ranges that meet); an edge is near when a
+  // marked cell lies in its range (two crossings on opposite sides of a large result make
+  // `all` cover most of it).
+  constexpr int kSide = 64;
+  const double sx = ax1 > ax0 ? kSide / (ax1 - ax0) : 0, sy = ay1 > ay0 ? kSide / (ay1 - ay0) : 0;
+  const auto col = [&](double x) { const double f = (x - ax0) * sx; return !(f >= 1) ? 0 : (f >= kSide - 1 ? kSide - 1 : static_cast<int>(f)); };
+  const auto row = [&](double y) { const double f = (y - ay0) * sy; return !(f >= 1) ? 0 : (f >= kSide - 1 ? kSide - 1 : static_cast<int>(f)); };
+  std::vector<std::uint64_t> marked(kSide, 0);  // per row, a bit per column
+  const auto mark = [&](const Box& b) {
+    const int c0 = col(detail::next_down(b.x0)), c1 = col(detail::next_up(b.x1));
+    for (int y = row(detail::next_down(b.y0)), y1 = row(detail::next_up(b.y1)); y <= y1; ++y) {
+      for (int x = c0; x <= c1; ++x) marked[static_cast<std::size_t>(y)] |= std::uint64_t{1} << x;
+    }
+  };
+  for (const Moved& m : moved_vertices) mark(m.box);
+  for (const Box& b : moved_edge_box) mark(b);
+  const auto far = [&](const Point& p, const Point& q) {
+    if ((std::max(p.x, q.x) < ax0) | (ax1 < std::min(p.x, q.x)) | (std::max(p.y, q.y) < ay0) | (ay1 < std::min(p.y, q.y))) return true;
+    const int c0 = col(std::min(p.x, q.x)), c1 = col(std::max(p.x, q.x));
+    const std::uint64_t columns = (c1 == kSide - 1 ? ~std::uint64_t{0} : (std::uint64_t{1} << (c1 + 1)) - 1) & ~((std::uint64_t{1} << c0) - 1);
+    for (int y = row(std::min(p.y, q.y)), y1 = row(std::max(p.y, q.y)); y <= y1; ++y) {
+      if (marked[static_cast<std::size_t>(y)] & columns) return false;
+    }
+    return true;
+  };
+  const auto near_edge = [&](const Edge& f) {
+    const Box fb = f.box();
     // Moved vertices against this edge.
-    for (std::size_t k = 0; k < moved_vertices.size(); ++k) {
-      const int v = moved_vertices[k];
-      if (v == f.a || v == f.b || !fb.meets(moved_vertex_box[k])) continue;
-      if (path_meets_edge(v, f)) return false;
+    for (const Moved& m : moved_vertices) {
+      if (m.id == f.a || m.id == f.b || !fb.meets(m.box)) continue;
+      if (path_meets_edge(m.id, m.at, f)) return false;
     }
     // This edge's ends against the moved edges.
     for (std::size_t k = 0; k < moved_edges.size(); ++k) {
-      const Edge& e = edges[static_cast<std::size_t>(moved_edges[k])];
+      const Edge& e = moved_edges[k];
       if (!fb.meets(moved_edge_box[k])) continue;
-      for (const int u : {f.a, f.b}) {
-        if (u == e.a || u == e.b || moved[static_cast<std::size_t>(u)]) continue;  // moved ones: above
-        if (!vertex_box(u).meets(moved_edge_box[k])) continue;
-        if (path_meets_edge(u, e)) return false;
+      for (const auto& [u, u_at] : {std::pair{f.a, f.pa}, std::pair{f.b, f.pb}}) {
+        if (u == e.a || u == e.b || moved(u)) continue;  // moved ones: above
+        Box ub;
+        ub.add(u_at);
+        if (!ub.meets(moved_edge_box[k])) continue;
+        if (path_meets_edge(u, u_at, e)) return false;
       }
+    }
+    return true;
+  };
+  for (std::size_t c = 0; c < r.cycles.size(); ++c) {
+    const std::vector<Point>& pts = rounded[c];
+    const std::size_t n = pts.size();
+    if (n < 2) continue;
+    for (std::size_t k = 0; k < (n == 2 ? 1 : n); ++k) {
+      const std::size_t l = k + 1 == n ? 0 : k + 1;
+      if (!far(pts[k], pts[l]) && !near_edge(edge_at(c, k))) return false;
     }
   }
   return true;

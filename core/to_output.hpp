@@ -82,30 +82,53 @@ void rounded_points_in_order(const BooleanResult<K>& r, const std::vector<std::v
 // Every cycle's vertices rounded to the nearest doubles. A kernel whose vertices are plain
 // values (VertexBoxes: no shared lazy state) rounds a large result on several threads, in
 // equal runs of the cycles' vertices one after another: the same doubles on any number.
+// With `halves` (VertexBoxes kernels), also each vertex's box half-sizes for the rounding
+// certificate, while the vertex is at hand.
 template <Kernel K>
-std::vector<std::vector<Point>> rounded_cycles(const BooleanResult<K>& r, unsigned threads) {
+std::vector<std::vector<Point>> rounded_cycles(const BooleanResult<K>& r, unsigned threads, RoundingHalves* halves = nullptr) {
   std::vector<std::vector<Point>> rounded(r.cycles.size());
   std::vector<std::size_t> first{0};  // the cycles' vertices numbered one after another
+  if constexpr (!VertexBoxes<K>) halves = nullptr;
+  if (halves) halves->assign(r.cycles.size(), {});
   for (std::size_t c = 0; c < r.cycles.size(); ++c) {
     rounded[c].resize(r.cycles[c].vertices.size());
+    if (halves) (*halves)[c].resize(r.cycles[c].vertices.size());
     first.push_back(first.back() + r.cycles[c].vertices.size());
   }
   const std::size_t work = first.back();
   const unsigned t = VertexBoxes<K> ? threads_for(work, threads) : 1;
   const std::size_t parts = t > 1 ? 8 * static_cast<std::size_t>(t) : 1;
-  run_tasks(t, parts, [&](std::size_t part) {
-    const std::size_t lo = work * part / parts, hi = work * (part + 1) / parts;
-    std::size_t c = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), lo) - first.begin()) - 1;
-    for (std::size_t i = lo; i < hi; ++i) {
-      while (i >= first[c + 1]) ++c;
-      const std::size_t k = i - first[c];
-      rounded[c][k] = K::approx(r.vertex(r.cycles[c].vertices[k]));
+  // Each part walks its run of vertices, calling at(c, k) for each.
+  const auto walk = [&](auto&& at) {
+    run_tasks(t, parts, [&](std::size_t part) {
+      const std::size_t lo = work * part / parts, hi = work * (part + 1) / parts;
+      std::size_t c = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), lo) - first.begin()) - 1;
+      for (std::size_t i = lo; i < hi; ++i) {
+        while (i >= first[c + 1]) ++c;
+        at(c, i - first[c]);
+      }
+    });
+  };
+  if constexpr (VertexBoxes<K>) {
+    if (halves) {
+      walk([&](std::size_t c, std::size_t k) {
+        const int id = r.cycles[c].vertices[k];
+        const auto v = r.vertex(id);
+        rounded[c][k] = K::approx(v);
+        (*halves)[c][k] = rounding_half_sizes(r, id, v, rounded[c][k]);
+      });
+      return rounded;
     }
-  });
+  }
+  walk([&](std::size_t c, std::size_t k) { rounded[c][k] = K::approx(r.vertex(r.cycles[c].vertices[k])); });
   return rounded;
 }
 
 }  // namespace detail
+
+// Up to this many crossings on its cycles, a result's rounding is certified exactly near them
+// (rounding_motion.hpp); beyond, from the boxes first (rounding_boxes.hpp).
+inline constexpr std::size_t kFewCrossingsForExactCertificate = 256;
 
 // Whether the result's polygons (each a list of cycle indices: shell, then holes), with
 // their vertices rounded as given, are valid OGC polygons, and its two-sided parts keep two
@@ -115,21 +138,25 @@ std::vector<std::vector<Point>> rounded_cycles(const BooleanResult<K>& r, unsign
 // when few vertices moved); otherwise one sweep over the rounded output, O(n log n).
 template <Kernel K, Kernel V>
 bool is_valid_rounded_result_ogc(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
-                                 const std::vector<std::vector<int>>& polygon_cycles, unsigned threads = 1) {
+                                 const std::vector<std::vector<int>>& polygon_cycles, unsigned threads = 1,
+                                 const RoundingHalves* halves = nullptr) {
   for (std::size_t c = 0; c < r.cycles.size(); ++c) {
     if (r.cycles[c].vertices.size() == 2 && rounded[c][0] == rounded[c][1]) return false;
   }
   if constexpr (K::is_exact) {
     // Few crossings: the exact certificate looks near them only; many: the boxes' grid.
-    constexpr std::size_t few = 256;
-    std::size_t crossings = 0;
-    for (const auto& c : r.cycles) {
-      for (const int id : c.vertices) crossings += !r.arrangement.is_input_point(id);
+    constexpr std::size_t few = kFewCrossingsForExactCertificate;
+    std::size_t crossings = static_cast<std::size_t>(r.arrangement.num_crossings());  // those on cycles, at most
+    if (crossings > few) {
+      crossings = 0;
+      for (const auto& c : r.cycles) {
+        for (const int id : c.vertices) crossings += !r.arrangement.is_input_point(id);
+      }
     }
     const bool few_moved = crossings <= few && std::is_same_v<typename K::Point, Point>;
     if (few_moved && rounding_keeps_topology(r, rounded, few)) return true;
     if constexpr (VertexBoxes<K>) {
-      if (rounding_boxes_keep_topology(r, rounded, polygon_cycles, threads)) return true;
+      if (rounding_boxes_keep_topology(r, rounded, polygon_cycles, threads, halves)) return true;
     }
     if (!few_moved && rounding_keeps_topology(r, rounded, few)) return true;
   }
@@ -190,7 +217,10 @@ template <Kernel K, Kernel V>
 Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsigned threads = 1) {
   Output out;
   out.unbounded = r.unbounded;
-  const std::vector<std::vector<Point>> rounded = detail::rounded_cycles(r, threads);
+  // The boxes' half-sizes are made while rounding when the box certificate may be asked.
+  RoundingHalves halves;
+  const bool many_crossings = static_cast<std::size_t>(r.arrangement.num_crossings()) > kFewCrossingsForExactCertificate;
+  const std::vector<std::vector<Point>> rounded = detail::rounded_cycles(r, threads, many_crossings ? &halves : nullptr);
   for (std::size_t i = 0; i < r.cycles.size(); ++i) {
     const auto& c = r.cycles[i];
     OutputIrreducible o;
@@ -215,7 +245,7 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsig
       out.polygons.push_back(std::move(p));
     }
   }
-  out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles, threads);
+  out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles, threads, many_crossings ? &halves : nullptr);
   return out;
 }
 

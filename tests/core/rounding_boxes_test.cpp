@@ -279,5 +279,70 @@ TEST(RoundingBoxes, StarsAreCertifiedOnAnyNumberOfThreads) {
   }
 }
 
+// The exact certificate of few crossings (rounding_motion.hpp) over a result of many input
+// points whose crossings lie on opposite sides of it: a ring of 3000 points, and two thin
+// triangles outside it, each with an edge along the ring's tangent at a ring point p and a
+// few ulps from p (p pokes through it or not: a cap of three points within ulps of each
+// other, which rounding may collapse). The certificate's verdict (what to_output reports)
+// must be the full check's, valid or not.
+TEST(RoundingBoxes, CrossingsOnOppositeSidesAgreeWithTheFullCheck) {
+  std::mt19937_64 rng(test_seed(71));
+  std::uniform_real_distribution<double> u(0, 1);
+  int valid = 0, invalid = 0, cases = 0;
+  for (int i = 0; i < 60; ++i) {
+    Polygon ring;
+    ring.rings.emplace_back();
+    const std::size_t n = 3000;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double t = 2 * std::numbers::pi * static_cast<double>(k) / n;
+      const double radius = 10 * (1 + 0.05 * u(rng));
+      ring.rings.back().push_back({radius * std::cos(t), radius * std::sin(t)});
+    }
+    const auto& pts = ring.rings.back();
+    // A point bulging out of the chord of its neighbours, from `start` on.
+    const auto bulging = [&](std::size_t start) {
+      for (std::size_t k = start;; k = (k + 1) % n) {
+        const Point& a = pts[(k + n - 1) % n];
+        const Point& b = pts[(k + 1) % n];
+        const Point& c = pts[k];
+        if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) < 0) return k;  // c right of a->b: outward (ccw ring)
+      }
+    };
+    Polygon caps;
+    for (const std::size_t at : {bulging(rng() % n), bulging((rng() % n + n / 2) % n)}) {
+      const Point& a = pts[(at + n - 1) % n];
+      const Point& b = pts[(at + 1) % n];
+      Point p = pts[at];
+      const int ulps = static_cast<int>(rng() % 7) - 3;
+      const Point out{p.x / 10, p.y / 10};  // outward, about unit length
+      for (int k = 0; k < std::abs(ulps); ++k) {
+        p.x = std::nextafter(p.x, (ulps > 0) == (out.x > 0) ? HUGE_VAL : -HUGE_VAL);
+        p.y = std::nextafter(p.y, (ulps > 0) == (out.y > 0) ? HUGE_VAL : -HUGE_VAL);
+      }
+      const Point d{b.x - a.x, b.y - a.y};  // the tangent (the neighbours' chord)
+      caps.rings.push_back({{p.x - 20 * d.x, p.y - 20 * d.y}, {p.x + 20 * d.x, p.y + 20 * d.y}, {p.x + out.x, p.y + out.y}});
+    }
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference}) {
+      Options opt;
+      opt.op = op;
+      BooleanResult<ExactKernel> r;
+      try {
+        r = boolean_op<ExactKernel>(ring, caps, opt);
+      } catch (const InvalidInput&) {
+        continue;
+      }
+      ++cases;
+      ASSERT_LE(r.arrangement.num_crossings(), static_cast<int>(kFewCrossingsForExactCertificate));
+      const Verdicts v = verdicts(r, false);
+      ASSERT_EQ((to_output<ExactKernel, ExactKernel>(r, false).rounded_valid), std::optional<bool>(v.full))
+          << "case " << i << " op " << operation_name(op);
+      (v.full ? valid : invalid) += 1;
+    }
+  }
+  std::printf("cases %d: valid %d, invalid %d\n", cases, valid, invalid);
+  EXPECT_GT(cases, 150);
+  EXPECT_GT(valid, 0);
+  EXPECT_GT(invalid, 0);
+}
 }  // namespace
 }  // namespace mk
