@@ -287,7 +287,7 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   // Each listed vertex with a copy of its box (the cells are read in the edges' order, the
   // boxes are stored in the cycles'), and per cell the largest half-sizes listed there.
   struct Listed {
-    RoundedVertexBox box;
+    Point at;
     int k;
   };
   std::vector<Listed> in_cell(entries);
@@ -299,7 +299,7 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
       const auto sp = span(k);
       for (int r = sp[2]; r <= sp[3]; ++r) {
         for (int c = sp[0]; c <= sp[1]; ++c) {
-          in_cell[static_cast<std::size_t>(fill[list(k, c, r)]++)] = {v[k], static_cast<int>(k)};
+          in_cell[static_cast<std::size_t>(fill[list(k, c, r)]++)] = {v[k].at, static_cast<int>(k)};
           auto& reach = cell_reach[static_cast<std::size_t>(grid.cell(c, r))];
           reach = {std::max(reach[0], v[k].rx), std::max(reach[1], v[k].ry)};
         }
@@ -332,9 +332,9 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
         const double ty = std::max(rounded_up(cell_reach[cell][1] + ary), DBL_MIN) * (1 + 0x1p-50);
         for (int k = s; k < end; ++k) {
           const Listed& l = in_cell[static_cast<std::size_t>(k)];
-          const Point& p = l.box.at;
+          const Point& p = l.at;
           if ((tx < x0 - p.x) | (tx < p.x - x1) | (ty < y0 - p.y) | (ty < p.y - y1) | (l.k == e[0]) | (l.k == e[1])) continue;
-          if (!clear_of_edge(l.box, a, b)) return false;
+          if (!clear_of_edge(v[static_cast<std::size_t>(l.k)], a, b)) return false;
         }
         return work <= part_budget;
       }, steps, part_budget);
