@@ -67,8 +67,11 @@ void add_group(GroupedRings& g, const Polygon& p) {
   ++g.groups;
 }
 
-template <Kernel K, class InResult>
-BooleanOutput run_fill(const GroupedRings& in, const BooleanOptions& o, InResult&& in_result) {
+// The faces around a point as fill_op lists them (one winding number per group each).
+using Faces = std::vector<const int*>;
+
+template <Kernel K, class InResult, class InClosed>
+BooleanOutput run_fill(const GroupedRings& in, const BooleanOptions& o, InResult&& in_result, const InClosed& in_closed) {
   std::vector<BasicRing<typename K::Point>> rings;
   rings.reserve(in.rings.size());
   for (const Ring& r : in.rings) {
@@ -79,22 +82,22 @@ BooleanOutput run_fill(const GroupedRings& in, const BooleanOptions& o, InResult
   const auto t0 = std::chrono::steady_clock::now();
   BooleanResult<K> r = fill_op<K>(
       build_winding_arrangement<K>(rings, in.group, in.groups, o.all_pairs ? PairSearch::all_pairs : PairSearch::sweep),
-      in_result);
+      in_result, o.regular ? nullptr : &in_closed);
   const auto t1 = std::chrono::steady_clock::now();
   return api_detail::boolean_output(r, o, std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count());
 }
 
-template <class InResult>
-BooleanOutput dispatch_fill(const GroupedRings& in, const BooleanOptions& o, InResult&& in_result) {
-  if (!o.regular) {
-    throw std::invalid_argument("fill rules, union-all, intersection-all and make-valid give regular results only");
-  }
+// in_result(w): whether a face (w: its winding number per group) is in the result;
+// in_closed(faces): whether the closed-set result holds a point whose neighbourhood meets
+// those faces (asked in non-regular mode only).
+template <class InResult, class InClosed>
+BooleanOutput dispatch_fill(const GroupedRings& in, const BooleanOptions& o, InResult&& in_result, InClosed&& in_closed) {
   for (std::size_t r = 0; r < in.rings.size(); ++r) {
     Polygon one;
     one.rings.push_back(in.rings[r]);
     validate_coordinates(one, "input");
   }
-  return api_detail::with_kernel(o.kernel, [&]<class K>(std::type_identity<K>) { return run_fill<K>(in, o, in_result); });
+  return api_detail::with_kernel(o.kernel, [&]<class K>(std::type_identity<K>) { return run_fill<K>(in, o, in_result, in_closed); });
 }
 
 GroupedRings rings_of_parts(const MultiPolygon& parts, FillRule rule, bool one_group) {
@@ -135,16 +138,32 @@ BooleanOutput compute_with_fill_rule(const Polygon& a, const Polygon& b, const B
   const bool hole_a = a.type == PolygonType::hole;
   const bool hole_b = b.type == PolygonType::hole;
   const Operation op = o.op;
-  return dispatch_fill(in, o, [=](const int* w) {
-    return is_face_in_result(op, is_filled(rule, w[0]) != hole_a, is_filled(rule, w[1]) != hole_b);
-  });
+  const auto in_region = [=](int g, int w) { return is_filled(rule, w) != (g == 0 ? hole_a : hole_b); };
+  return dispatch_fill(
+      in, o, [=](const int* w) { return is_face_in_result(op, in_region(0, w[0]), in_region(1, w[1])); },
+      [=](const Faces& faces) {
+        // Each input's closure holds the point when a face around it is in the input's
+        // region, its interior when every one is.
+        bool closure[2] = {false, false}, interior[2] = {true, true};
+        for (const int* w : faces) {
+          for (int g = 0; g < 2; ++g) {
+            const bool in = in_region(g, w[g]);
+            closure[g] = closure[g] || in;
+            interior[g] = interior[g] && in;
+          }
+        }
+        return is_in_closed_result(op, closure[0], interior[0], closure[1], interior[1]);
+      });
 }
 
 }  // namespace api_detail
 
 BooleanOutput union_all(const MultiPolygon& parts, const BooleanOptions& o) {
   const FillRule rule = o.fill_rule.value_or(FillRule::union_);
-  return dispatch_fill(rings_of_parts(parts, rule, true), o, [=](const int* w) { return is_filled(rule, w[0]); });
+  return dispatch_fill(rings_of_parts(parts, rule, true), o, [=](const int* w) { return is_filled(rule, w[0]); },
+                       [=](const Faces& faces) {
+                         return std::any_of(faces.begin(), faces.end(), [&](const int* w) { return is_filled(rule, w[0]); });
+                       });
 }
 
 BooleanOutput intersection_all(const MultiPolygon& parts, const BooleanOptions& o) {
@@ -152,19 +171,29 @@ BooleanOutput intersection_all(const MultiPolygon& parts, const BooleanOptions& 
   const FillRule rule = o.fill_rule.value_or(FillRule::union_);
   const GroupedRings in = rings_of_parts(parts, rule, false);
   const int n = in.groups;
-  return dispatch_fill(in, o, [=](const int* w) {
-    for (int g = 0; g < n; ++g) {
-      if (!is_filled(rule, w[g])) return false;
-    }
-    return true;
-  });
+  return dispatch_fill(
+      in, o,
+      [=](const int* w) {
+        for (int g = 0; g < n; ++g) {
+          if (!is_filled(rule, w[g])) return false;
+        }
+        return true;
+      },
+      [=](const Faces& faces) {  // in every part's closure
+        for (int g = 0; g < n; ++g) {
+          if (std::none_of(faces.begin(), faces.end(), [&](const int* w) { return is_filled(rule, w[g]); })) return false;
+        }
+        return true;
+      });
 }
 
 BooleanOutput make_valid(const MultiPolygon& input, const BooleanOptions& o) {
   const FillRule rule = o.fill_rule.value_or(FillRule::evenodd);
   GroupedRings in;
   add_group(in, fill_rule_polygon(input, rule));
-  return dispatch_fill(in, o, [=](const int* w) { return is_filled(rule, w[0]); });
+  return dispatch_fill(in, o, [=](const int* w) { return is_filled(rule, w[0]); }, [=](const Faces& faces) {
+    return std::any_of(faces.begin(), faces.end(), [&](const int* w) { return is_filled(rule, w[0]); });
+  });
 }
 
 }  // namespace mk

@@ -127,7 +127,6 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
       if (name == fill_rule_name(r)) rule = r;
     }
     if (!rule) throw CaseError{"unknown fill_rule '" + name + "' (expected evenodd, nonzero, positive, negative or union)"};
-    if (!options.regular) throw CaseError{"a fill rule gives regular results only (the batch runs --non-regular)"};
   }
   // The polygons: "a_wkt" and "b_wkt", or "a" and "b" in the native JSON form, whose
   // coordinates may be exact rationals (an exact result fed back in).

@@ -147,6 +147,7 @@ void run_parts_command(const PartsCommandOptions& o) {
   options.area_exact = o.stats;
   options.exact_coordinates = o.format == OutputFormat::native_json;
   options.fill_rule = o.fill_rule;
+  options.regular = o.regular;
   PredicateCounters::reset();
   BooleanOutput result;
   const char* what = "union-all";

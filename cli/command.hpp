@@ -46,6 +46,7 @@ struct PartsCommandOptions {
   std::string input;  // file, `-` or inline text
   std::string kernel;
   std::optional<FillRule> fill_rule;  // empty: the operation's default (union, or evenodd)
+  bool regular = true;
   OutputFormat format = OutputFormat::wkt;
   std::string output;
   bool stats = false;

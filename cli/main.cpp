@@ -25,7 +25,7 @@ constexpr const char* usage_lines =
     "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats] [--threads N]\n"
     "                     [--fill-rule evenodd|nonzero|positive|negative|union]\n"
     "                     [--rounding certified|nearest] [--grid G]\n"
-    "       mkbool union-all|intersection-all|make-valid INPUT [--fill-rule R] [--kernel K]\n"
+    "       mkbool union-all|intersection-all|make-valid INPUT [--fill-rule R] [--non-regular] [--kernel K]\n"
     "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats]\n"
     "       mkbool batch FILE.jsonl [--kernel K] [--non-regular] [-o FILE]\n"
     "       mkbool --help | --version\n";
@@ -151,6 +151,9 @@ int run_parts_form(int argc, char** argv) {
   std::string format = "wkt";
   app.add_option("INPUT", o.input, "file, '-' or inline WKT")->required();
   app.add_option("--fill-rule", rule, fill_rule_help)->check(CLI::IsMember(fill_rules()));
+  bool non_regular = false;
+  app.add_flag("--non-regular", non_regular,
+               "closed-set operation of the parts' closures (intersection-all keeps where parts only touch)");
   app.add_option("--kernel", o.kernel, kernel_help())->check(kernel_validator());
   app.add_option("--format", format, "output format: wkt (default), geojson, json (native, exact) or svg")
       ->check(CLI::IsMember(output_formats()));
@@ -162,6 +165,7 @@ int run_parts_form(int argc, char** argv) {
     return parse_error(app, e);
   }
   if (!rule.empty()) o.fill_rule = fill_rules().at(rule);
+  o.regular = !non_regular;
   o.format = output_formats().at(format);
   run_parts_command(o);
   return static_cast<int>(ExitCode::success);
@@ -241,7 +245,7 @@ int run_command_form(int argc, char** argv) {
       ->check(CLI::IsMember(formats));
   app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
   app.add_flag("--stats", o.stats, "print one JSON line of statistics on standard error");
-  app.add_option("--fill-rule", rule, fill_rule_help)->check(CLI::IsMember(fill_rules()))->excludes("--non-regular");
+  app.add_option("--fill-rule", rule, fill_rule_help)->check(CLI::IsMember(fill_rules()));
   app.add_option("--threads", o.threads, "threads for the operation (default 0: every core; the result is the same)")
       ->check(CLI::Range(0u, 1024u));
   std::string rounding = "certified";

@@ -148,33 +148,87 @@ std::vector<int> link_windings(const WindingArrangement<K>& wa) {
   return left;
 }
 
-// The regular result of a predicate over the groups' winding numbers: its boundary links,
-// oriented with the result on their left, traced into cycles by step 6.
-template <Kernel K, class InResult>
-BooleanResult<K> fill_op(WindingArrangement<K>&& wa, InResult&& in_result) {
+// The result of a predicate over the groups' winding numbers: its boundary links, oriented
+// with the result on their left, traced into cycles by step 6. Non-regular (`in_closed`
+// given): also the links and vertices that the closed-set operation keeps where no result
+// face is beside them, as two-sided parts (both directions of a link) and one-sided parts
+// (a vertex). in_closed(faces) says whether a point whose neighbourhood meets exactly the
+// faces listed (each a pointer to one winding number per group; two for a link's relative
+// interior, every sector around a vertex) is in the closed result: an input's closure holds
+// the point when one of those faces is in the input's region, its interior when all are.
+// [MK89 §2.3] (closed-set operations) [MK89 §3.2] (two-sided and one-sided parts)
+template <Kernel K, class InResult, class InClosed>
+BooleanResult<K> fill_op(WindingArrangement<K>&& wa, InResult&& in_result, const InClosed* in_closed) {
   const int G = wa.groups;
   const std::vector<int> left = link_windings(wa);
   BooleanResult<K> res;
   Arrangement<K>& arr = res.arrangement;
   arr = std::move(wa.arr);
-  HashEdgeTable ef(wa.links.size(), arr.num_vertices());
-  std::vector<int> right(static_cast<std::size_t>(G));
+  HashEdgeTable ef(2 * wa.links.size(), arr.num_vertices());
+  // The winding numbers right of every link (left minus the link's net count).
+  std::vector<int> right(left.size());
+  for (std::size_t i = 0; i < left.size(); ++i) right[i] = left[i] - wa.delta[i];
+  std::vector<const int*> faces;
   for (std::size_t l = 0; l < wa.links.size(); ++l) {
     const int* wl = left.data() + l * G;
-    for (int g = 0; g < G; ++g) right[g] = wl[g] - wa.delta[l * G + g];
+    const int* wr = right.data() + l * G;
     const bool in_left = in_result(wl);
-    if (in_left == in_result(right.data())) continue;
     const WindingLink& k = wa.links[l];
-    ef.insert(in_left ? EfEntry{k.lo, k.hi, k.dir, true} : EfEntry{k.hi, k.lo, k.dir.reversed(), true}, true);
+    if (in_left == in_result(wr)) {
+      if (in_closed == nullptr || in_left) continue;
+      faces.assign({wl, wr});
+      if (!(*in_closed)(faces)) continue;
+      ef.insert(EfEntry{k.lo, k.hi, k.dir, true}, false);  // a two-sided part: both directions
+      ef.insert(EfEntry{k.hi, k.lo, k.dir.reversed(), true}, false);
+      continue;
+    }
+    ef.insert(in_left ? EfEntry{k.lo, k.hi, k.dir, true} : EfEntry{k.hi, k.lo, k.dir.reversed(), true}, in_closed == nullptr);
   }
   // Both (empty) polygons are islands: counterclockwise cycles are islands (Table 4, union).
-  res.cycles = construct_result_cycles(arr, ef, Operation::union_);
+  std::vector<int> isolated;
+  if (in_closed != nullptr) {
+    // A vertex that no kept link touches and no result face surrounds (then it would be
+    // inside the result) is a one-sided part when the closed-set result holds it.
+    std::vector<char> touched(static_cast<std::size_t>(arr.num_vertices()), 0);
+    ef.for_each([&](const EfEntry& e) { touched[e.from] = touched[e.to] = 1; });
+    std::vector<int> begin(static_cast<std::size_t>(arr.num_vertices()) + 1, 0);
+    for (const WindingLink& k : wa.links) ++begin[k.lo + 1], ++begin[k.hi + 1];
+    for (std::size_t v = 1; v < begin.size(); ++v) begin[v] += begin[v - 1];
+    std::vector<int> around(static_cast<std::size_t>(begin.back()));
+    {
+      std::vector<int> fill(begin.begin(), begin.end() - 1);
+      for (std::size_t l = 0; l < wa.links.size(); ++l) {
+        around[fill[wa.links[l].lo]++] = static_cast<int>(l);
+        around[fill[wa.links[l].hi]++] = static_cast<int>(l);
+      }
+    }
+    for (int v = 0; v < arr.num_vertices(); ++v) {
+      if (touched[v] || begin[v] == begin[v + 1]) continue;
+      faces.clear();
+      bool any_in_result = false;
+      for (int i = begin[v]; i < begin[v + 1]; ++i) {
+        const std::size_t l = static_cast<std::size_t>(around[i]);
+        faces.push_back(left.data() + l * G);
+        faces.push_back(right.data() + l * G);
+        any_in_result = any_in_result || in_result(faces[faces.size() - 2]) || in_result(faces.back());
+      }
+      if (!any_in_result && (*in_closed)(faces)) isolated.push_back(v);
+    }
+  }
+  res.cycles = construct_result_polygons(arr, ef, Operation::union_, isolated);
   const std::vector<int> zero(static_cast<std::size_t>(G), 0);
   res.unbounded = in_result(zero.data());
   res.stats.vertices_in = arr.points.size();
   res.stats.crossings = static_cast<std::size_t>(wa.distinct_crossings);
   for (const auto& c : res.cycles) res.stats.vertices_out += c.vertices.size();
   return res;
+}
+
+// The regular result of a predicate over the groups' winding numbers.
+template <Kernel K, class InResult>
+BooleanResult<K> fill_op(WindingArrangement<K>&& wa, InResult&& in_result) {
+  using Closed = bool (*)(const std::vector<const int*>&);
+  return fill_op<K>(std::move(wa), in_result, static_cast<const Closed*>(nullptr));
 }
 
 }  // namespace mk

@@ -183,9 +183,6 @@ def _options(fill_rule, grid_size, rounding, regular):
     if fill_rule is not None and fill_rule not in FILL_RULES:
         raise UsageError(f"unknown fill rule {fill_rule!r} (evenodd, nonzero, positive, negative or union)"
                          if isinstance(fill_rule, str) else f"fill_rule must be a string, not {type(fill_rule).__name__}")
-    if fill_rule is not None and not regular:
-        raise UsageError("fill_rule= gives regular results only (regular=False is the closed-set operation of the "
-                         "paper's domain, without a fill rule)")
     if rounding not in ("certified", "nearest"):
         raise UsageError(f"unknown rounding {rounding!r} (certified or nearest)")
     grid = _grid_text(grid_size)

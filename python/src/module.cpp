@@ -127,10 +127,6 @@ BooleanOptions make_options(Operation op, const std::string& kernel, bool regula
   o.area_exact = area_exact;
   o.exact_coordinates = exact;
   o.fill_rule = fill_rule_named(fill_rule);
-  if (o.fill_rule && !regular) {
-    throw std::invalid_argument("fill_rule= gives regular results only (regular=False is the closed-set operation of "
-                                "the paper's domain, without a fill rule)");
-  }
   if (rounding == "certified") {
     o.rounding = RoundingMode::certified;
   } else if (rounding == "nearest") {

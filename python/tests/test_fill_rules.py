@@ -157,8 +157,6 @@ def test_fill_rule_errors():
         mkbool.union(BOWTIE, BOWTIE, fill_rule="even-odd")
     with pytest.raises(mkbool.UsageError, match="fill_rule must be a string"):
         mkbool.union(BOWTIE, BOWTIE, fill_rule=1)
-    with pytest.raises(mkbool.UsageError, match="regular results only"):
-        mkbool.union(BOWTIE, BOWTIE, fill_rule="evenodd", regular=False)
     with pytest.raises(mkbool.UsageError, match="unknown fill rule"):
         mkbool.union_all([BOWTIE], fill_rule="odd")
     # without a rule a self-crossing ring is outside the paper's domain, as before
@@ -174,3 +172,16 @@ def test_fill_rule_errors():
         mkbool.union_all([mkbool.union(BOWTIE, "POLYGON((10 10,11 10,11 11,10 10))", fill_rule="evenodd", a_type="hole")])
     with pytest.raises(mkbool.UsageError, match="read by nesting"):
         mkbool.make_valid(mkbool.as_polygon(sg.box(0, 0, 1, 1)))
+
+
+def test_non_regular_with_a_fill_rule_keeps_where_regions_only_touch():
+    # the bowtie's right triangle (2 2, 4 4, 4 0) and the square beside it share x = 4
+    right = [(4, 0), (5, 0), (5, 4), (4, 4)]
+    r = mkbool.intersection(BOWTIE, right, fill_rule="evenodd", regular=False, area_exact=True)
+    assert r.area_exact == 0 and len(r.dangling_edges) == 1
+    assert sorted(r.dangling_edges[0][:, 0].tolist()) == [4.0, 4.0]
+    assert sorted(r.dangling_edges[0][:, 1].tolist()) == [0.0, 4.0]
+    assert len(mkbool.intersection(BOWTIE, right, fill_rule="evenodd").dangling_edges) == 0
+    corner = [(4, 4), (5, 4), (5, 5), (4, 5)]
+    p = mkbool.intersection(BOWTIE, corner, fill_rule="nonzero", regular=False)
+    assert p.isolated_points.tolist() == [[4.0, 4.0]]
