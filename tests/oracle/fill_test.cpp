@@ -5,7 +5,7 @@
 // [BRIEF §1, extended by issue 13] [BRIEF §3] (exact kernels agree on every input)
 // Preconditions: CGAL 5.5. Environment: MK_ORACLE_SEED (a number, or "random"),
 // MK_FILL_CASES (random self-crossing inputs; default 5000 in Release, 300 under the
-// sanitizers), MK_FILL_SETS (random union-all sets; default 200, 40 under the sanitizers).
+// sanitizers; a twentieth of them non-regular), MK_FILL_SETS (random union-all sets; default 200, 40 under the sanitizers).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -280,6 +280,87 @@ TEST(FillRuleOracle, EveryRuleAndOperationAgreesWithWindingNumbersAtSamplePoints
     }
   }
   std::cout << operations << " operations, " << checked_points << " sample points checked" << std::endl;
+}
+
+// ---- non-regular results: the closed-set operation of the regions' closures
+
+// The whole result as a region of the oracle's model: polygons, two-sided parts (2-point
+// rings) and one-sided parts (1-point rings), in exact coordinates.
+Region full_region_of_output(const Output& o) {
+  Region r;
+  r.complement = o.unbounded;
+  for (const auto& c : o.irreducible) {
+    QRing ring;
+    for (std::size_t i = 0; i < c.vertices.size(); ++i) ring.push_back({Q(c.exact[2 * i]), Q(c.exact[2 * i + 1])});
+    r.rings.push_back(std::move(ring));
+  }
+  return r;
+}
+
+// At sample points (every vertex, the crossings of A's edges with B's, the midpoints of the
+// pieces of input edges, the result's vertices and edge midpoints, random points) the
+// non-regular result holds the point exactly when the closed-set operation does, each
+// input's closure and interior read from the winding numbers of the open sectors around
+// the point (the oracle's neighbourhood: the faces its neighbourhood meets).
+TEST(FillRuleOracle, NonRegularAgreesWithTheClosuresAtSamplePoints) {
+  const std::uint64_t s = seed() + 1;
+  const long cases = count_from("MK_FILL_CASES", kDefaultCases) / 20;
+  std::cout << "seed " << s << " (MK_ORACLE_SEED + 1), " << cases << " inputs (MK_FILL_CASES / 20)" << std::endl;
+  Rng rng(s);
+  long checked = 0, in_lower_dimensional = 0;
+  for (long i = 0; i < cases; ++i) {
+    const std::string fa = kFamilies[static_cast<std::size_t>(i) % kFamilies.size()];
+    const std::string fb = kFamilies[static_cast<std::size_t>(uniform(rng, 0, long(kFamilies.size()) - 1))];
+    Polygon a = self_crossing_input(fa, rng);
+    Polygon b = self_crossing_input(fb, rng);
+    transform(rng, a, b);
+    const std::vector<QRing> qa = q_rings(a), qb = q_rings(b);
+    const Region ra{qa, false}, rb{qb, false};  // for their rings' directions only
+    const std::vector<const Region*> inputs{&ra, &rb};
+    const std::string what = "case " + std::to_string(i) + " (" + fa + ", " + fb + "): A " + describe(a) + " B " + describe(b);
+    for (const Rule rule : kRules) {
+      for (const Operation op : kOps) {
+        BooleanOptions o;
+        o.op = op;
+        o.regular = false;
+        o.fill_rule = to_fill_rule(rule);
+        o.exact_coordinates = true;
+        o.area = false;
+        o.kernel = "exact";
+        BooleanOutput r;
+        try {
+          r = compute(a, b, o);
+        } catch (const std::exception& ex) {
+          FAIL() << what << " " << rule_name(rule) << " " << operation_name(op) << ": " << ex.what();
+        }
+        const Region result = full_region_of_output(r.output);
+        std::vector<QPoint> samples = sample_points(ra, rb, result, rng, 8);
+        std::shuffle(samples.begin(), samples.end(), rng);
+        if (samples.size() > 40) samples.resize(40);
+        for (const QPoint& p : samples) {
+          const Neighbourhood n = neighbourhood(p, inputs);
+          bool closure[2] = {false, false}, interior[2] = {true, true};
+          for (const QPoint& q : n.sector_points) {
+            const bool in[2] = {rule_accepts(rule, winding_number(qa, q)), rule_accepts(rule, winding_number(qb, q))};
+            for (int g = 0; g < 2; ++g) {
+              closure[g] = closure[g] || in[g];
+              interior[g] = interior[g] && in[g];
+            }
+          }
+          const bool expected = in_closed_result(op, closure[0], interior[0], closure[1], interior[1]);
+          const Location got = locate(result, p);
+          ++checked;
+          if (expected && r.output.dangling_edges.size() + r.output.isolated_points.size() > 0) ++in_lower_dimensional;
+          ASSERT_EQ(got != Location::outside, expected)
+              << what << " " << rule_name(rule) << " " << operation_name(op) << " at " << show(p) << ": result "
+              << location_name(got);
+        }
+      }
+    }
+  }
+  std::cout << checked << " sample points checked, " << in_lower_dimensional
+            << " of them in results with two- or one-sided parts" << std::endl;
+  EXPECT_GT(in_lower_dimensional, 0);
 }
 
 // ---- union-all and intersection-all of valid polygons against CGAL
