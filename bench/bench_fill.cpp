@@ -4,7 +4,10 @@
 // <rule>/<n>: a random star-shaped ring of n vertices whose angles are jittered by up to
 // three steps (so that it crosses itself a few times per vertex), intersected with itself by a fill rule, mkbool against Clipper. Issue 13's speed bars.
 // Workloads: `circles`, n random 32-gons of radius 0.5-2 in a 100 x 100 square (seed 1);
-// `grid`, a k x k grid of unit squares sharing every edge (n = k^2), the coverage case.
+// `spread`, the same 32-gons at the density of `circles` at n = 10^4, in a square whose side
+// grows as sqrt(n) (crossings grow with n: issue 13's growth from 10^3 to 10^6 vertices in
+// all, plotted by bench/plot_fill_growth.py); `grid`, a k x k grid of unit squares sharing
+// every edge (n = k^2), the coverage case.
 // [BRIEF §6] paper-notes.md deviation 17
 // Preconditions: built with GEOS (MK_HAVE_GEOS) and Clipper (MK_HAVE_CLIPPER) when found.
 #include <benchmark/benchmark.h>
@@ -27,9 +30,9 @@
 namespace mk::bench {
 namespace {
 
-MultiPolygon circles(int n) {
+MultiPolygon circles(int n, double side = 100) {
   std::mt19937_64 rng(1);
-  std::uniform_real_distribution<double> pos(0, 100), rad(0.5, 2);
+  std::uniform_real_distribution<double> pos(0, side), rad(0.5, 2);
   MultiPolygon out;
   for (int i = 0; i < n; ++i) {
     const double cx = pos(rng), cy = pos(rng), r = rad(rng);
@@ -52,19 +55,27 @@ MultiPolygon grid(int n) {
   return out;
 }
 
-MultiPolygon workload(const std::string& name, int n) { return name == "circles" ? circles(n) : grid(n); }
+MultiPolygon workload(const std::string& name, int n) {
+  if (name == "spread") return circles(n, 100 * std::sqrt(n / 1e4));
+  return name == "circles" ? circles(n) : grid(n);
+}
 
 void BM_UnionAllMkbool(benchmark::State& state, const std::string& name) {
   const MultiPolygon parts = workload(name, static_cast<int>(state.range(0)));
   BooleanOptions o;
   o.area = false;
-  std::size_t out = 0;
+  std::size_t out = 0, crossings = 0;
   for (auto _ : state) {
     const BooleanOutput r = union_all(parts, o);
     out = r.stats.vertices_out;
+    crossings = r.stats.crossings;
     benchmark::DoNotOptimize(out);
   }
   state.counters["vertices_out"] = static_cast<double>(out);
+  state.counters["crossings"] = static_cast<double>(crossings);
+  std::size_t in = 0;
+  for (const OgcPolygon& p : parts) in += p.shell.size();
+  state.counters["vertices_in"] = static_cast<double>(in);
 }
 
 #ifdef MK_HAVE_GEOS
@@ -96,7 +107,7 @@ void BM_UnionAllGeos(benchmark::State& state, const std::string& name) {
 #ifdef MK_HAVE_CLIPPER
 void BM_UnionAllClipper(benchmark::State& state, const std::string& name) {
   const MultiPolygon parts = workload(name, static_cast<int>(state.range(0)));
-  const double scale = std::ldexp(1.0, 22);  // coordinates below 128: within Clipper's loRange
+  const double scale = std::ldexp(1.0, 22);  // coordinates below 256 (spread at 32,000: 181): within Clipper's loRange
   ClipperLib::Paths paths;
   for (const OgcPolygon& p : parts) {
     ClipperLib::Path path;
@@ -175,8 +186,10 @@ void register_all() {
         ->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime();
 #endif
   }
-  for (const std::string w : {"circles", "grid"}) {
-    const std::vector<long> sizes = w == "circles" ? std::vector<long>{1000, 10000} : std::vector<long>{10000};
+  for (const std::string w : {"circles", "grid", "spread"}) {
+    const std::vector<long> sizes = w == "circles" ? std::vector<long>{1000, 10000}
+                                    : w == "spread" ? std::vector<long>{32, 320, 3200, 32000}
+                                                    : std::vector<long>{10000};
     for (const long n : sizes) {
       benchmark::RegisterBenchmark(("BM_UnionAll<Mkbool>/" + w).c_str(), BM_UnionAllMkbool, w)
           ->Arg(n)->Unit(benchmark::kMillisecond)->UseRealTime();
