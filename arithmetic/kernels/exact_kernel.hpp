@@ -125,9 +125,32 @@ struct ExactKernel {
     const Sign c = compare_coordinate(axis, u, v);
     return ascending ? c : -c;
   }
+  // Three vertices, crossings among them: by interval arithmetic over their boxes when its
+  // sign is certain (a few ulps wide, they decide all but nearly collinear triples: a
+  // result's hole assignment asks this of its crossings), exactly otherwise.
   static Sign orient_vertices(const Vertex& a, const Vertex& b, const Vertex& c) {
     if (!a.is_crossing && !b.is_crossing && !c.is_crossing) return orient2d(a.a0, b.a0, c.a0);
+    if (const Sign s = orient_boxes(a, b, c); s != Sign::zero) return s;
     return RationalKernel::orient2d(exact(a), exact(b), exact(c));
+  }
+  // The sign of (b - a) x (c - a) for every choice of points in the three boxes, or zero
+  // when the boxes leave it open. Boxes within 2^500 of the origin only: their differences'
+  // products then stay finite and no interval bound becomes NaN (the policy does not check).
+  static Sign orient_boxes(const Vertex& a, const Vertex& b, const Vertex& c) {
+    constexpr double limit = 0x1p500;
+    for (const Vertex* v : {&a, &b, &c}) {
+      if (!(std::fabs(v->lo[0]) < limit && std::fabs(v->hi[0]) < limit && std::fabs(v->lo[1]) < limit &&
+            std::fabs(v->hi[1]) < limit)) {
+        return Sign::zero;
+      }
+    }
+    using I = interval_filter::Interval;
+    RoundingGuard guard(FE_UPWARD);
+    const auto x = [](const Vertex& v) { return I(RoundingGuard::opaque(v.lo[0]), RoundingGuard::opaque(v.hi[0])); };
+    const auto y = [](const Vertex& v) { return I(RoundingGuard::opaque(v.lo[1]), RoundingGuard::opaque(v.hi[1])); };
+    const I d = (x(b) - x(a)) * (y(c) - y(a)) - (y(b) - y(a)) * (x(c) - x(a));
+    volatile double lower = d.lower(), upper = d.upper();
+    return lower > 0 ? Sign::positive : (upper < 0 ? Sign::negative : Sign::zero);
   }
   // Nearest doubles: from exact expansions when the magnitudes allow (almost always), else
   // from the exact rational.

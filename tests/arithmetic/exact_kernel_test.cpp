@@ -1,0 +1,100 @@
+// The exact kernel's orientation of three vertices among which are crossings
+// (ExactKernel::orient_vertices): decided from the crossings' interval boxes when their sign
+// is certain, exactly otherwise; it must equal the orientation of the exact rational points
+// on random crossings at every scale, on crossings exactly collinear (three segments
+// crossing one line: zero, which the boxes never claim) and on such triples moved by an ulp.
+// [BMP06] (interval filters) [MK89 §3.3]
+// Preconditions: none.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "arithmetic/kernels/exact_kernel.hpp"
+#include "arithmetic/kernels/rational_kernel.hpp"
+#include "tests/arithmetic/test_support.hpp"
+
+namespace mk {
+namespace {
+
+using Vx = ExactKernel::Vertex;
+
+Sign exact_orientation(const Vx& a, const Vx& b, const Vx& c) {
+  return RationalKernel::orient2d(ExactKernel::exact(a), ExactKernel::exact(b), ExactKernel::exact(c));
+}
+
+// The crossing of segments p0p1 and q0q1 (which cross properly), as the kernel makes it.
+Vx crossing(const Point& p0, const Point& p1, const Point& q0, const Point& q1) { return ExactKernel::crossing(p0, p1, q0, q1); }
+
+struct Tally {
+  int by_boxes = 0;
+  int exactly = 0;
+};
+
+void check(const Vx& a, const Vx& b, const Vx& c, Tally& t, const char* what, int i) {
+  const Sign expected = exact_orientation(a, b, c);
+  const Sign boxes = ExactKernel::orient_boxes(a, b, c);
+  ASSERT_TRUE(boxes == Sign::zero || boxes == expected) << what << " case " << i;
+  ASSERT_EQ(ExactKernel::orient_vertices(a, b, c), expected) << what << " case " << i;
+  (boxes == Sign::zero ? t.exactly : t.by_boxes) += 1;
+}
+
+TEST(ExactKernelOrientation, RandomCrossingsAtEveryScale) {
+  std::mt19937_64 rng(31);
+  Tally t;
+  for (int i = 0; i < 20000; ++i) {
+    const int e = static_cast<int>(rng() % 800) - 400;
+    const auto r = [&] { return test::random_double(rng, e - 2, e); };
+    // Segments through a common region: each vertex a crossing of a random segment with the
+    // segment (-s, 0) (s, 0) turned by a random angle, or an input point.
+    const auto vertex = [&]() -> Vx {
+      if (rng() % 4 == 0) return ExactKernel::vertex({r(), r()});
+      const Point c{r(), r()};
+      const double s = std::ldexp(1.0, e + 1);
+      return crossing({c.x - s, c.y - s * 0.25}, {c.x + s, c.y + s * 0.25}, {c.x - s * 0.5, c.y + s}, {c.x + s * 0.375, c.y - s});
+    };
+    const Vx a = vertex(), b = vertex(), c = vertex();
+    if (!a.is_crossing && !b.is_crossing && !c.is_crossing) continue;
+    check(a, b, c, t, "random", i);
+  }
+  std::printf("by the boxes %d, exactly %d\n", t.by_boxes, t.exactly);
+  EXPECT_GT(t.by_boxes, 10000);
+}
+
+TEST(ExactKernelOrientation, CollinearCrossingsAndOneUlpAway) {
+  std::mt19937_64 rng(32);
+  Tally t;
+  int zeros = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const int e = static_cast<int>(rng() % 200) - 100;
+    const auto r = [&] { return test::random_double(rng, e - 3, e); };
+    // The line p -> q, and three segments crossing it: their crossings lie on it exactly.
+    Point p{r(), r()}, q{r(), r()};
+    if (p.x == q.x && p.y == q.y) continue;
+    const Point d{q.x - p.x, q.y - p.y};
+    Vx on[3];
+    for (int k = 0; k < 3; ++k) {
+      const double s = 0.2 + 0.3 * k;
+      const Point m{p.x + s * d.x, p.y + s * d.y};  // near the line (rounded), not on it
+      const Point n{-d.y, d.x};                      // across it
+      on[k] = crossing(p, q, {m.x - n.x, m.y - n.y}, {m.x + n.x, m.y + n.y});
+    }
+    check(on[0], on[1], on[2], t, "collinear", i);
+    zeros += exact_orientation(on[0], on[1], on[2]) == Sign::zero;
+    // The line's end moved by an ulp for the third crossing: no longer collinear, nearly.
+    Point q2 = q;
+    q2.y = std::nextafter(q2.y, (rng() & 1) ? HUGE_VAL : -HUGE_VAL);
+    const Point m{p.x + 0.7 * d.x, p.y + 0.7 * d.y};
+    const Vx off = crossing(p, q2, {m.x + d.y, m.y - d.x}, {m.x - d.y, m.y + d.x});
+    check(on[0], on[1], off, t, "one ulp away", i);
+    // An input point on the line's end with two crossings on the line.
+    check(on[0], on[2], ExactKernel::vertex(q), t, "with the line's end", i);
+  }
+  std::printf("by the boxes %d, exactly %d, collinear triples %d\n", t.by_boxes, t.exactly, zeros);
+  EXPECT_GT(zeros, 4000);  // the boxes never decide those: the exact stage says zero
+  EXPECT_GT(t.exactly, 4000);
+}
+
+}  // namespace
+}  // namespace mk
