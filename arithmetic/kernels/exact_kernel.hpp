@@ -92,6 +92,17 @@ struct ExactKernel {
     return v;
   }
 
+  // Whether two crossings are of the same two segments (each given either way round, in
+  // either order): then they are the same point, without rationals. A ring against itself,
+  // or rings sharing edges, find each crossing several times.
+  static bool same_segments(const Vertex& u, const Vertex& v) {
+    const auto same = [](const Point& p0, const Point& p1, const Point& q0, const Point& q1) {
+      return (p0 == q0 && p1 == q1) || (p0 == q1 && p1 == q0);
+    };
+    return (same(u.a0, u.a1, v.a0, v.a1) && same(u.b0, u.b1, v.b0, v.b1)) ||
+           (same(u.a0, u.a1, v.b0, v.b1) && same(u.b0, u.b1, v.a0, v.a1));
+  }
+
   // The box the vertex certainly lies in (VertexBoxes): an input point's is the point.
   static std::array<double, 4> vertex_box(const Vertex& v) { return {v.lo[0], v.lo[1], v.hi[0], v.hi[1]}; }
 
@@ -107,6 +118,7 @@ struct ExactKernel {
     if (u.hi[axis] < v.lo[axis]) return Sign::negative;
     if (v.hi[axis] < u.lo[axis]) return Sign::positive;
     if (!u.is_crossing && !v.is_crossing) return Sign::zero;  // equal doubles
+    if (u.is_crossing && v.is_crossing && same_segments(u, v)) return Sign::zero;  // one crossing found twice
     const RationalPoint eu = exact(u);
     const RationalPoint ev = exact(v);
     return sign_of(axis == 0 ? cmp(eu.x, ev.x) : cmp(eu.y, ev.y));

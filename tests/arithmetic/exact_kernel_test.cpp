@@ -2,7 +2,8 @@
 // (ExactKernel::orient_vertices): decided from the crossings' interval boxes when their sign
 // is certain, exactly otherwise; it must equal the orientation of the exact rational points
 // on random crossings at every scale, on crossings exactly collinear (three segments
-// crossing one line: zero, which the boxes never claim) and on such triples moved by an ulp.
+// crossing one line: zero, which the boxes never claim) and on such triples moved by an ulp;
+// and its comparison of crossings found twice from the same two segments, given in any order.
 // [BMP06] (interval filters) [MK89 §3.3]
 // Preconditions: none.
 #include <gtest/gtest.h>
@@ -94,6 +95,35 @@ TEST(ExactKernelOrientation, CollinearCrossingsAndOneUlpAway) {
   std::printf("by the boxes %d, exactly %d, collinear triples %d\n", t.by_boxes, t.exactly, zeros);
   EXPECT_GT(zeros, 4000);  // the boxes never decide those: the exact stage says zero
   EXPECT_GT(t.exactly, 4000);
+}
+
+TEST(ExactKernelComparison, OneCrossingFoundTwiceIsOnePoint) {
+  std::mt19937_64 rng(33);
+  int distinct_checked = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const int e = static_cast<int>(rng() % 400) - 200;
+    const auto r = [&] { return test::random_double(rng, e - 2, e); };
+    const Point c{r(), r()};
+    const double s = std::ldexp(1.0, e + 1);
+    const Point p0{c.x - s, c.y - s * 0.25}, p1{c.x + s, c.y + s * 0.25};
+    const Point q0{c.x - s * 0.5, c.y + s}, q1{c.x + s * 0.375, c.y - s};
+    const Vx u = crossing(p0, p1, q0, q1);
+    for (const Vx& v : {crossing(q0, q1, p0, p1), crossing(p1, p0, q1, q0), crossing(q1, q0, p0, p1)}) {
+      ASSERT_TRUE(ExactKernel::same_segments(u, v)) << "case " << i;
+      ASSERT_EQ(ExactKernel::compare_vertices(u, v), Sign::zero) << "case " << i;
+    }
+    // Another segment through the same crossing point's neighbourhood: not the same pair,
+    // decided as the rationals say.
+    const Point q2{q1.x, std::nextafter(q1.y, HUGE_VAL)};
+    const Vx w = crossing(p0, p1, q0, q2);
+    ASSERT_FALSE(ExactKernel::same_segments(u, w));
+    const RationalPoint eu = ExactKernel::exact(u), ew = ExactKernel::exact(w);
+    const int x = cmp(eu.x, ew.x), y = cmp(eu.y, ew.y);
+    const Sign expected = x != 0 ? (x < 0 ? Sign::negative : Sign::positive) : (y < 0 ? Sign::negative : y > 0 ? Sign::positive : Sign::zero);
+    ASSERT_EQ(ExactKernel::compare_vertices(u, w), expected) << "case " << i;
+    distinct_checked += expected != Sign::zero;
+  }
+  EXPECT_GT(distinct_checked, 4000);
 }
 
 }  // namespace
