@@ -196,7 +196,8 @@ Region frame_region(const Output& o, const Q& unscale) {
 }
 
 // The rules by their definitions (Clipper's meanings; `union` reads the rings oriented
-// shells counterclockwise, holes clockwise, as nonzero), written here from the issue.
+// shells counterclockwise, holes clockwise, as nonzero), written here from the issue; the
+// operations on open faces are membership.hpp's face_in_result.
 bool accepts(FillRule rule, int w) {
   switch (rule) {
     case FillRule::evenodd: return w % 2 != 0;
@@ -204,16 +205,6 @@ bool accepts(FillRule rule, int w) {
     case FillRule::union_: return w != 0;
     case FillRule::positive: return w > 0;
     case FillRule::negative: return w < 0;
-  }
-  return false;
-}
-
-bool in_result(Operation op, bool a, bool b) {
-  switch (op) {
-    case Operation::intersection: return a && b;
-    case Operation::union_: return a || b;
-    case Operation::difference: return a && !b;
-    case Operation::symmetric_difference: return a != b;
   }
   return false;
 }
@@ -286,7 +277,7 @@ TEST(FillRuleCgalArrangementOracle, EveryRuleAndOperationGivesTheSelectedFacesEx
       for (const Operation op : kOps) {
         ++operations;
         const auto selection = arr.select([&](const std::vector<int>& w) {
-          return in_result(op, accepts(rule, winding(w, ra, 0)), accepts(rule, winding(w, rb, ra.rings.size())));
+          return face_in_result(op, accepts(rule, winding(w, ra, 0)), accepts(rule, winding(w, rb, ra.rings.size())));
         });
         // The two exact kernels take turns (fill_test.cpp checks that they agree): each
         // meets every family, rule and operation.
