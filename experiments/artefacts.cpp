@@ -55,6 +55,13 @@ std::optional<Artefact::Kind> parse_artefact_kind(std::string_view name) {
 
 namespace {
 
+// The options a kernel's run of the case used (fill-rule cases read their rings by the rule).
+BooleanOptions options_of(Operation op, bool regular, const std::string& kernel, const CaseSpec& spec) {
+  BooleanOptions o{op, regular, kernel};
+  o.fill_rule = fill_rule_of(spec);
+  return o;
+}
+
 // Runs f in a forked child, killing it after `timeout` seconds. True when it finished.
 bool run_isolated(const std::function<void()>& f, double timeout) {
   std::fflush(nullptr);
@@ -186,7 +193,7 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
             write_file(target, snapping_picture(c.a, c.b, op, r->regular, r->kernel));
             return;
           }
-          const ExactResult ref = exact_reference(c.a, c.b, op, r->regular, false);
+          const ExactResult ref = exact_reference(c.a, c.b, op, r->regular, false, fill_rule_of(spec));
           std::optional<Output> kernel_out;
           std::string title = r->kernel + ": " + std::string(verdict_name(r->verdict));
           if (r->area_error) {
@@ -198,7 +205,7 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
           if (rerun) {
             try {
               kernel_out = is_peer(r->kernel) ? peer_as_output(run_peer_on_case(r->kernel, c, op))
-                                              : compute(c.a, c.b, BooleanOptions{op, r->regular, r->kernel}).output;
+                                              : compute(c.a, c.b, options_of(op, r->regular, r->kernel, spec)).output;
             } catch (const std::exception& e) {
               title += " (" + std::string(e.what()).substr(0, 80) + ")";
             }
@@ -226,8 +233,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
             }
             return p;
           };
-          const Polygon k = area_polygon(compute(c.a, c.b, BooleanOptions{op, r->regular, r->kernel}).output);
-          const Polygon e = area_polygon(exact_reference(c.a, c.b, op, r->regular, false).output);
+          const Polygon k = area_polygon(compute(c.a, c.b, options_of(op, r->regular, r->kernel, c.spec)).output);
+          const Polygon e = area_polygon(exact_reference(c.a, c.b, op, r->regular, false, fill_rule_of(c.spec)).output);
           for (const auto& [x, y] : {std::pair{&k, &k}, std::pair{&e, &e}, std::pair{&k, &e}}) {
             if (const auto what = violated_identity(*x, *y)) {
               const Operation show = x == y ? Operation::intersection : Operation::symmetric_difference;

@@ -101,6 +101,11 @@ const std::vector<Generator>& generators() {
       {"kettner_grid", "Kettner et al.'s orient2d grids as polygon pairs (p + (i, j) ulps)", {"shared_edge_a", "shared_edge_b", "chain_a"}, &kettner_grid},
       {"blob", "two smooth curves of n vertices crossing twice", {"smooth"}, &blob},
       {"star", "two random star polygons of n vertices, about n^2/400 crossings", {"random"}, &star},
+      {"self_crossing_random", "random lattice rings crossing themselves and each other, a hole sometimes (fill rule: param rule)", {"lattice", "rotated"}, &self_crossing_random},
+      {"bowtie_degenerate", "bow-ties sharing vertices and crossing points (fill rule: param rule)", {"lattice", "rotated"}, &bowtie_degenerate},
+      {"pentagram", "star polygons {5/2} and 7-point stars, centres wound 2-3 times (fill rule: param rule)", {"lattice", "rotated"}, &pentagram},
+      {"traced_twice", "a ring traced twice, with the same ring again or reversed (fill rule: param rule)", {"lattice", "rotated"}, &traced_twice},
+      {"overlapping_multipart", "overlapping parts with holes sharing edges and vertices (fill rule: param rule)", {"lattice", "rotated"}, &overlapping_multipart},
       {"reported", "inputs of public issue reports of polygon Boolean libraries (experiments/reported/*.jsonl; variant = case id)", {}, &reported},
       {"cases", "the user's own pairs (run --cases FILE.jsonl; variant = case id)", {}, &cases},
   };
@@ -111,12 +116,9 @@ const Generator& find_generator(std::string_view name) {
   for (const auto& g : generators()) {
     if (g.name == name) return g;
   }
-  std::string known;
-  for (const auto& g : generators()) {
-    if (!known.empty()) known += ", ";
-    known += g.name;
-  }
-  throw std::invalid_argument("unknown generator '" + std::string(name) + "' (known: " + known + ")");
+  // Not the whole list: with the fill generators it no longer fits one short line.
+  throw std::invalid_argument("unknown generator '" + std::string(name) + "' (`mkbool-experiment list` names all " +
+                              std::to_string(generators().size()) + ")");
 }
 
 bool is_external_generator(std::string_view name) { return name == "reported" || name == "cases"; }
@@ -163,6 +165,7 @@ std::vector<CaseSpec> plan_sweep(const PlanOptions& options) {
   for (const auto& name : options.generators) find_generator(name);  // reject unknown names early
   for (const Generator& g : generators()) {
     if (!wanted(g.name)) continue;
+    if (options.generators.empty() && is_fill_generator(g.name)) continue;  // on request only
     std::uint64_t index = 0;
     const auto add = [&](std::string_view variant, std::vector<std::pair<std::string, std::int64_t>> params) {
       out.push_back({std::string(g.name), std::string(variant), std::move(params), mix_seed(options.base_seed, g.name, index++)});
@@ -186,6 +189,12 @@ std::vector<CaseSpec> plan_sweep(const PlanOptions& options) {
       const int large = options.seeds > 0 ? std::min(options.seeds, sz.large_seeds) : sz.large_seeds;
       for (const std::int64_t n : g.name == "blob" ? sz.blob_n : sz.star_n) {
         for (int s = 0; s < large; ++s) add(g.variants[0], {{"n", n}});
+      }
+    } else if (is_fill_generator(g.name)) {
+      for (int s = 0; s < seeds; ++s) {
+        for (const auto v : g.variants) {
+          for (std::int64_t rule = 0; rule < 5; ++rule) add(v, {{"rule", rule}});
+        }
       }
     } else if (g.name == "grid_random") {
       for (int s = 0; s < 2 * seeds; ++s) {

@@ -6,9 +6,11 @@
 // Preconditions: a spec's variant is one the generator lists; otherwise std::invalid_argument.
 #pragma once
 
+#include <optional>
 #include <string_view>
 #include <vector>
 
+#include "core/fill_rule.hpp"
 #include "experiments/case.hpp"
 
 namespace mk::experiments {
@@ -34,6 +36,18 @@ PolygonPair ulp_perturbed(const CaseSpec& spec);
 PolygonPair kettner_grid(const CaseSpec& spec);
 // The paper's example figures (generators_paper.cpp).
 PolygonPair paper_figures(const CaseSpec& spec);
+// Self-crossing and multi-part input read by a fill rule (generators_fill.cpp), run only when
+// named (`run --generators ...`), never in the default sweep.
+PolygonPair self_crossing_random(const CaseSpec& spec);
+PolygonPair bowtie_degenerate(const CaseSpec& spec);
+PolygonPair pentagram(const CaseSpec& spec);
+PolygonPair traced_twice(const CaseSpec& spec);
+PolygonPair overlapping_multipart(const CaseSpec& spec);
+bool is_fill_generator(std::string_view name);
+// The fill rule a case's runs use: the parameter rule = 0-4 (evenodd, nonzero, positive,
+// negative, union; default 0) of a fill generator's case, none for other generators.
+// Throws std::invalid_argument for another value.
+std::optional<FillRule> fill_rule_of(const CaseSpec& spec);
 
 enum class SweepLevel { quick, normal, full };
 

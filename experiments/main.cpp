@@ -314,7 +314,7 @@ int case_command(const CaseSpec& spec, const std::string& op_name, bool regular,
   std::ofstream(fs::path(out) / (stem + ".wkt")) << regression_case_text(
       c.a, c.b, op, regular, {"generator=" + spec.generator + " variant=" + spec.variant + " params=" +
                                   spec.params_text() + " seed=" + std::to_string(spec.seed)});
-  const ExactResult ref = exact_reference(c.a, c.b, op, regular, false);
+  const ExactResult ref = exact_reference(c.a, c.b, op, regular, false, fill_rule_of(spec));
   std::cout << (fs::path(out) / (stem + ".wkt")).string() << ": " << c.size() << " input vertices, exact result "
             << ref.cycles.size() << " polygons\n";
   if (!pictures) return 0;
@@ -324,6 +324,7 @@ int case_command(const CaseSpec& spec, const std::string& op_name, bool regular,
     try {
       mk::BooleanOptions options{op, regular, std::string(k)};
       options.exact_coordinates = true;  // assess() compares exact results exactly
+      options.fill_rule = fill_rule_of(spec);
       output = mk::compute(c.a, c.b, options).output;
       const Assessment as = assess(*output, ref);
       verdict = std::string(verdict_name(as.verdict)) + (as.note.empty() ? "" : " (" + as.note + ")");

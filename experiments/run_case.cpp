@@ -220,7 +220,10 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
   const std::size_t per_group = 1 + o.kernels.size();
   const bool paper_variants = cs.size() <= o.paper_reference_limit;
   const bool external = is_external_generator(c.spec.generator);
-  const bool with_peers = runs_peers(c, cs.size(), o) &&
+  // Fill-rule cases (generators_fill.cpp): regular operations only, and no peers (their
+  // adapters read the rings as OGC polygons, not by a fill rule).
+  const std::optional<FillRule> fill_rule = fill_rule_of(c.spec);
+  const bool with_peers = !fill_rule && runs_peers(c, cs.size(), o) &&
                           std::any_of(o.kernels.begin(), o.kernels.end(), [](const std::string& k) { return is_peer(k); });
   std::optional<MultiPolygon> a_ogc = cs.a_ogc, b_ogc = cs.b_ogc;
   if (with_peers && !external) {
@@ -232,11 +235,12 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
     const bool regular = o.regular[g % o.regular.size()];
     const std::size_t base = g * per_group;
     const std::size_t first_kernel = first_slot > base ? first_slot - base - 1 : 0;
+    if (fill_rule && !regular) continue;
     // The reference (recomputed when a run after it in this group crashed or timed out).
     on_start(base);
     ExactResult ref;
     try {
-      ref = exact_reference(cs.a, cs.b, op, regular, paper_variants);
+      ref = exact_reference(cs.a, cs.b, op, regular, paper_variants, fill_rule);
     } catch (const std::exception& e) {
       ResultRow r = base_row(c, cs.size(), op, regular);
       r.kernel = "reference";
@@ -286,6 +290,7 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
         options.exact_coordinates = true;  // assess() compares exact results exactly
         options.rounding = o.rounding;
         options.grid = o.grid;
+        options.fill_rule = fill_rule;
         const BooleanOutput out = compute(cs.a, cs.b, options);
         const Counts counts = read_counters();
         r.predicate_calls = counts.calls;

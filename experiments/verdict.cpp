@@ -10,6 +10,7 @@
 #include <map>
 
 #include "arithmetic/shoelace.hpp"
+#include "api/mkbool.hpp"
 #include "core/boolean_op.hpp"
 #include "core/canonical.hpp"
 #include "core/to_output.hpp"
@@ -97,7 +98,21 @@ std::vector<ExactCycle> exact_cycles(const Output& output) {
   return out;
 }
 
-ExactResult exact_reference(const Polygon& a, const Polygon& b, Operation op, bool regular, bool paper_variants) {
+ExactResult exact_reference(const Polygon& a, const Polygon& b, Operation op, bool regular, bool paper_variants,
+                            std::optional<FillRule> fill_rule) {
+  if (fill_rule) {
+    BooleanOptions o{op, regular, "rational"};
+    o.fill_rule = fill_rule;
+    o.all_pairs = paper_variants;
+    o.area = false;
+    o.exact_coordinates = true;
+    ExactResult out;
+    out.output = compute(a, b, o).output;
+    out.unbounded = out.output.unbounded;
+    out.cycles = exact_cycles(out.output);
+    if (!out.unbounded) out.area = typed_area(out.cycles);
+    return out;
+  }
   const Options opt{op, regular, paper_variants ? EfOrganisation::sorted : EfOrganisation::hash,
                     paper_variants ? PairSearch::all_pairs : PairSearch::sweep};
   const BooleanResult<RationalKernel> r = boolean_op<RationalKernel>(a, b, opt);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "arithmetic/kernels/rational_kernel.hpp"
+#include "core/fill_rule.hpp"
 #include "core/output.hpp"
 #include "core/polygon.hpp"
 
@@ -63,7 +64,10 @@ struct ExactResult {
 // RationalKernel on A op B. With `paper_variants` it uses the paper's sorted EF table and
 // all-pairs intersection search, so that the `rational` kernel run through the API (hash
 // table, sweep) is checked against a partly independent path.
-ExactResult exact_reference(const Polygon& a, const Polygon& b, Operation op, bool regular, bool paper_variants);
+// With a fill rule (cases of the fill generators), RationalKernel on the rings read by the
+// rule, through the library (regular only; paper_variants: all-pairs search).
+ExactResult exact_reference(const Polygon& a, const Polygon& b, Operation op, bool regular, bool paper_variants,
+                            std::optional<FillRule> fill_rule = std::nullopt);
 
 struct Assessment {
   Verdict verdict = Verdict::exact_match;

@@ -35,7 +35,7 @@ TEST(Generators, EveryVariantBuildsAValidInputReproducibly) {
         EXPECT_EQ(c.a.rings, again.a.rings);
         EXPECT_EQ(c.b.rings, again.b.rings);
         EXPECT_EQ(c.a.type, again.a.type);
-        EXPECT_NO_THROW(exact_reference(c.a, c.b, Operation::intersection, true, true));
+        EXPECT_NO_THROW(exact_reference(c.a, c.b, Operation::intersection, true, true, fill_rule_of(spec)));
       }
     }
   }
@@ -53,7 +53,8 @@ TEST(Generators, ValidityAcceptsEveryValidExactResult) {
         for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
                                    Operation::symmetric_difference}) {
           for (const bool regular : {true, false}) {
-            const ExactResult ref = exact_reference(c.a, c.b, op, regular, false);
+            if (!regular && fill_rule_of(spec)) continue;  // fill rules: regular results only
+            const ExactResult ref = exact_reference(c.a, c.b, op, regular, false, fill_rule_of(spec));
             if (ref.output.rounded_valid != true) continue;
             std::string why;
             EXPECT_TRUE(is_valid_output(ref.output, ccw_type_of(ref), &why))
@@ -154,8 +155,12 @@ TEST(Plan, QuickPlanIsReproducibleWithDistinctSeeds) {
     EXPECT_TRUE(seeds.insert({a[i].generator, a[i].seed}).second) << a[i].generator << " " << a[i].seed;
     names.insert(a[i].generator);
   }
-  // Every generator has cases, except `cases`, which runs only the user's file (run --cases).
-  EXPECT_EQ(names.size(), generators().size() - 1);
+  // Every generator has cases, except `cases`, which runs only the user's file (run --cases),
+  // and the fill generators, which run when named.
+  std::size_t fill = 0;
+  for (const Generator& g : generators()) fill += is_fill_generator(g.name) ? 1 : 0;
+  EXPECT_EQ(fill, 5u);
+  EXPECT_EQ(names.size(), generators().size() - 1 - fill);
   EXPECT_FALSE(names.count("cases"));
   EXPECT_TRUE(names.count("reported"));
   EXPECT_NE(plan_sweep({SweepLevel::quick, 0, 2, {}})[0].seed, a[0].seed);
