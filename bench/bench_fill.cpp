@@ -1,6 +1,7 @@
 // BM_UnionAll<Library>/<workload>/<n>: the union of many overlapping polygons in one call:
 // mkbool's union_all (one arrangement, exact), GEOS's GEOSUnaryUnion_r (floating
-// precision) and Clipper 6.4 (all paths in one Execute, nonzero). BM_SelfCrossing<Library>/
+// precision), Clipper 6.4 (all paths in one Execute, nonzero) and CGAL's
+// Polygon_set_2::join over Epeck (exact, the reference; not on `spread`). BM_SelfCrossing<Library>/
 // <rule>/<n>: a random star-shaped ring of n vertices whose angles are jittered by up to
 // three steps (so that it crosses itself a few times per vertex), intersected with itself by a fill rule, mkbool against Clipper. Issue 13's speed bars.
 // Workloads: `circles`, n random 32-gons of radius 0.5-2 in a 100 x 100 square (seed 1);
@@ -25,6 +26,12 @@
 #endif
 #ifdef MK_HAVE_CLIPPER
 #include <polyclipping/clipper.hpp>
+#endif
+#ifdef MK_HAVE_CGAL
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_set_2.h>
+
+#include <iterator>
 #endif
 
 namespace mk::bench {
@@ -101,6 +108,34 @@ void BM_UnionAllGeos(benchmark::State& state, const std::string& name) {
   state.counters["area"] = area;
   GEOSGeom_destroy_r(ctx, all);
   GEOS_finish_r(ctx);
+}
+#endif
+
+#ifdef MK_HAVE_CGAL
+void BM_UnionAllCgal(benchmark::State& state, const std::string& name) {
+  using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+  const MultiPolygon parts = workload(name, static_cast<int>(state.range(0)));
+  std::vector<CGAL::Polygon_2<Epeck>> polygons;
+  for (const OgcPolygon& p : parts) {
+    CGAL::Polygon_2<Epeck> q;
+    for (const Point& v : p.shell) q.push_back(Epeck::Point_2(v.x, v.y));
+    if (q.is_clockwise_oriented()) q.reverse_orientation();
+    polygons.push_back(std::move(q));
+  }
+  double area = 0;
+  for (auto _ : state) {
+    CGAL::Polygon_set_2<Epeck> set;
+    set.join(polygons.begin(), polygons.end());
+    std::vector<CGAL::Polygon_with_holes_2<Epeck>> out;
+    set.polygons_with_holes(std::back_inserter(out));
+    Epeck::FT a = 0;
+    for (const auto& p : out) {
+      a += p.outer_boundary().area();
+      for (auto h = p.holes_begin(); h != p.holes_end(); ++h) a += h->area();  // clockwise: negative
+    }
+    area = CGAL::to_double(a);
+  }
+  state.counters["area"] = area;
 }
 #endif
 
@@ -200,6 +235,12 @@ void register_all() {
 #ifdef MK_HAVE_CLIPPER
       benchmark::RegisterBenchmark(("BM_UnionAll<Clipper>/" + w).c_str(), BM_UnionAllClipper, w)
           ->Arg(n)->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
+#ifdef MK_HAVE_CGAL
+      if (w != "spread") {
+        benchmark::RegisterBenchmark(("BM_UnionAll<Cgal>/" + w).c_str(), BM_UnionAllCgal, w)
+            ->Arg(n)->Unit(benchmark::kMillisecond)->UseRealTime();
+      }
 #endif
     }
   }
