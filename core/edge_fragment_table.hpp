@@ -125,7 +125,9 @@ class HashEdgeTable {
       }
     }
     *link = static_cast<int>(entries_.size());
-    entries_.push_back(e);
+    // Made in place from e's fields: copying e whole would wait for the narrow stores that
+    // just made it (GCC 12).
+    entries_.emplace_back(e.from, e.to, e.dir, true);
     next_.push_back(-1);
   }
 

@@ -5,6 +5,7 @@
 // Preconditions: step 3 done.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -33,36 +34,57 @@ class FragmentEnd {
   int code_;
 };
 
-// The ends of one polygon's fragments, grouped by vertex, each stored as its code: the
-// table costs 4 bytes per vertex and 8 per fragment, and is built without a second
-// per-vertex array.
+// The ends of one polygon's fragments, grouped by vertex. Most vertices are met once by the
+// polygon's cycles, away from a cycle's start: their two ends are the fragment i leaving and
+// the fragment i - 1 arriving, so the table keeps i alone (4 bytes per vertex, one pass over
+// the fragments). The other vertices (met several times, or where a cycle starts) keep their
+// ends as codes in groups, in increasing order of the code (2 fragment, + 1 when arriving),
+// the order the simple vertices give as well.
 // A bit per vertex says whether the polygon reaches it at all: most queries are about the
-// other polygon's vertices, which it does not reach, and the bits (1/32 of the groups'
-// size) answer them from cache.
+// other polygon's vertices, which it does not reach, and the bits (1/32 of the slots' size)
+// answer them from cache.
 // The polygon must outlive the table and keep its fragments and edges in place.
 class FragmentEndTable {
  public:
   FragmentEndTable() = default;
   FragmentEndTable(const PreparedPolygon& poly, int num_vertices) : poly_(&poly) {
-    // begin_[v] first counts v's fragment ends, then holds the end of v's group, and is moved down
-    // to its start as the group is filled from the back.
-    begin_.assign(static_cast<std::size_t>(num_vertices) + 1, 0);
-    for (const auto& f : poly.fragments) {
-      ++begin_[f.from];
-      ++begin_[f.to];
-    }
+    slot_.assign(static_cast<std::size_t>(num_vertices), kUnreached);
     reached_.assign(static_cast<std::size_t>(num_vertices) / 64 + 1, 0);
-    int total = 0;
-    for (std::size_t v = 0; v < begin_.size(); ++v) {
-      reached_[v / 64] |= static_cast<std::uint64_t>(begin_[v] > 0) << (v % 64);
-      total += begin_[v];
-      begin_[v] = total;
+    struct Visit {
+      int vertex, leaving, arriving;
+      bool operator<(const Visit& o) const { return vertex != o.vertex ? vertex < o.vertex : leaving < o.leaving; }
+    };
+    std::vector<Visit> grouped;  // the visits of the vertices kept in groups
+    for (std::size_t c = 0; c + 1 < poly.cycle_first_fragment.size(); ++c) {
+      const int first = poly.cycle_first_fragment[c];
+      const int last = poly.cycle_first_fragment[c + 1];
+      for (int i = first; i < last; ++i) {
+        const int v = poly.fragments[static_cast<std::size_t>(i)].from;
+        reached_[static_cast<std::size_t>(v) / 64] |= std::uint64_t{1} << (v % 64);
+        int& s = slot_[static_cast<std::size_t>(v)];
+        if (s == kUnreached && i != first) {
+          s = i;
+          continue;
+        }
+        if (s >= 0) grouped.push_back({v, s, s - 1});
+        s = kGrouped;
+        grouped.push_back({v, i, i == first ? last - 1 : i - 1});
+      }
     }
-    codes_.resize(static_cast<std::size_t>(total));
-    for (int i = static_cast<int>(poly.fragments.size()) - 1; i >= 0; --i) {
-      const auto& f = poly.fragments[i];
-      codes_[--begin_[f.to]] = 2 * i + 1;
-      codes_[--begin_[f.from]] = 2 * i;
+    if (grouped.empty()) return;
+    std::sort(grouped.begin(), grouped.end());
+    group_begin_.push_back(0);
+    codes_.reserve(2 * grouped.size());
+    for (std::size_t k = 0; k < grouped.size();) {
+      const int v = grouped[k].vertex;
+      const std::size_t from = codes_.size();
+      for (; k < grouped.size() && grouped[k].vertex == v; ++k) {
+        codes_.push_back(2 * grouped[k].leaving);
+        codes_.push_back(2 * grouped[k].arriving + 1);
+      }
+      std::sort(codes_.begin() + static_cast<std::ptrdiff_t>(from), codes_.end());
+      slot_[static_cast<std::size_t>(v)] = kGrouped - static_cast<int>(group_begin_.size());
+      group_begin_.push_back(static_cast<int>(codes_.size()));
     }
   }
 
@@ -80,22 +102,45 @@ class FragmentEndTable {
     const PreparedPolygon* poly_;
     const int* code_;
   };
-  struct Span {
-    Iterator b;
-    Iterator e;
-    Iterator begin() const { return b; }
-    Iterator end() const { return e; }
-    bool empty() const { return b == e; }
+  // The ends at one vertex: a range of a group, or the two codes of a simple vertex held here.
+  class Span {
+   public:
+    Span(const PreparedPolygon* poly, const int* first, const int* last) : poly_(poly), first_(first), last_(last) {}
+    Span(const PreparedPolygon* poly, int leaving) : poly_(poly), pair_{2 * leaving - 1, 2 * leaving}, inline_(true) {}
+    Iterator begin() const { return {poly_, inline_ ? pair_.data() : first_}; }
+    Iterator end() const { return {poly_, inline_ ? pair_.data() + 2 : last_}; }
+    bool empty() const { return !inline_ && first_ == last_; }
+
+   private:
+    const PreparedPolygon* poly_;
+    const int* first_ = nullptr;
+    const int* last_ = nullptr;
+    std::array<int, 2> pair_{};
+    bool inline_ = false;
   };
   bool reaches(int v) const { return (reached_[static_cast<std::size_t>(v) / 64] >> (v % 64)) & 1; }
-  int count(int v) const { return begin_[v + 1] - begin_[v]; }
+  int count(int v) const {
+    const int s = slot_[static_cast<std::size_t>(v)];
+    if (s >= 0) return 2;
+    if (s == kUnreached) return 0;
+    const auto g = static_cast<std::size_t>(kGrouped - s);
+    return group_begin_[g] - group_begin_[g - 1];
+  }
   Span at(int v) const {
-    return {{poly_, codes_.data() + begin_[v]}, {poly_, codes_.data() + begin_[v + 1]}};
+    const int s = slot_[static_cast<std::size_t>(v)];
+    if (s >= 0) return {poly_, s};
+    if (s == kUnreached) return {poly_, nullptr, nullptr};
+    const auto g = static_cast<std::size_t>(kGrouped - s);
+    return {poly_, codes_.data() + group_begin_[g - 1], codes_.data() + group_begin_[g]};
   }
 
  private:
+  static constexpr int kUnreached = -1;
+  static constexpr int kGrouped = -2;  // while building; then kGrouped - g for group g (from 1)
   const PreparedPolygon* poly_ = nullptr;
-  std::vector<int> begin_;
+  // Per vertex: the fragment leaving a simple vertex, kUnreached, or kGrouped - g.
+  std::vector<int> slot_;
+  std::vector<int> group_begin_;  // group g's codes: [group_begin_[g - 1], group_begin_[g])
   std::vector<int> codes_;
   std::vector<std::uint64_t> reached_;  // bit v: v has fragment ends
 };

@@ -31,6 +31,12 @@ inline SweepItem sweep_item(int src, int dst, int group, bool continues) {
   return {std::min(src, dst), std::max(src, dst), group, src < dst, continues};
 }
 
+// Appends the item of src -> dst, made in place: push_back(sweep_item(...)) builds it on the
+// stack and copies it with wide loads that wait for the narrow stores (GCC 12).
+inline void add_sweep_item(std::vector<SweepItem>& items, int src, int dst, int group, bool continues) {
+  items.emplace_back(std::min(src, dst), std::max(src, dst), group, src < dst, continues);
+}
+
 enum class PairSearch : unsigned char { sweep, all_pairs };
 
 namespace detail {

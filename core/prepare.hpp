@@ -99,9 +99,9 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
     if (ids.size() < 2) continue;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const int u = ids[k];
-      const int w = ids[(k + 1) % ids.size()];
-      items.push_back(sweep_item(u, w, 0, k > 0));
-      refs.push_back({r, static_cast<int>(k)});
+      const int w = ids[k + 1 < ids.size() ? k + 1 : 0];
+      add_sweep_item(items, u, w, 0, k > 0);
+      refs.emplace_back(r, static_cast<int>(k));
     }
   }
   // Per part of the pair search (see CandidatePairs): points of the polygon on its own

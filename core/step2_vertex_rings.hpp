@@ -20,9 +20,9 @@ void build_vertex_rings(Arrangement<K>& arr) {
     poly.cycle_first_edge.reserve(poly.cycles.size() + 1);
     for (int c = 0; c < static_cast<int>(poly.cycles.size()); ++c) {
       const auto& cycle = poly.cycles[c];
-      for (std::size_t i = 0; i < cycle.size(); ++i) {
-        poly.edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()]});
-      }
+      // Made in place, without a division per vertex for the wrap-around (cycles have 2+ vertices).
+      for (std::size_t i = 0; i + 1 < cycle.size(); ++i) poly.edges.emplace_back(cycle[i], cycle[i + 1]);
+      poly.edges.emplace_back(cycle.back(), cycle.front());
       poly.cycle_first_edge.push_back(static_cast<int>(poly.edges.size()));
     }
   }

@@ -30,10 +30,26 @@ struct ResultCycle {
 namespace detail {
 
 // The turning number of a closed sequence of directions: +1 counterclockwise, -1 clockwise.
+// With exact predicates, a turn wraps past east only between directions in different halves
+// (DirectionOrder::is_upper): within one half, compare(b, a) is -orient(b, a), the turn
+// itself, so wraps() is 0 there, and one half test per direction replaces most orientations.
+// Rounded predicates need not be antisymmetric: they take wraps() at every turn.
 template <Kernel K>
 int turning_number(const DirectionOrder<K>& order, const std::vector<Direction>& dirs) {
   int turns = 0;
-  for (std::size_t i = 0; i < dirs.size(); ++i) turns += order.wraps(dirs[i], dirs[(i + 1) % dirs.size()]);
+  const std::size_t n = dirs.size();
+  if constexpr (K::is_exact) {
+    if (n == 0) return 0;
+    const bool first_upper = order.is_upper(dirs[0]);
+    bool upper = first_upper;
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool next_upper = i + 1 < n ? order.is_upper(dirs[i + 1]) : first_upper;
+      if (next_upper != upper) turns += order.wraps(dirs[i], dirs[(i + 1) % n]);
+      upper = next_upper;
+    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) turns += order.wraps(dirs[i], dirs[(i + 1) % n]);
+  }
   return turns;
 }
 
