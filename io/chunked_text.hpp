@@ -1,0 +1,93 @@
+// A large text written in chunks on several threads and joined in order: one thread appends
+// finished chunks to the result (and formats the next chunk itself when it is the next to
+// append) while the others format the chunks after it, so joining overlaps formatting. The
+// same bytes on any number of threads. [BRIEF §6] (across cores)
+// Preconditions: format(i, out) writes chunk i's text at `out` and returns its end, writing
+// at most bound(i) bytes past out, reading nothing that changes meanwhile; it may throw.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/parallel.hpp"
+
+namespace mk::io_detail {
+
+// Chunks are formatted into a scratch buffer of the largest bound (kept in cache, grown at
+// most once per thread), then appended to the result or kept for it.
+template <class Bound, class Format>
+std::string join_chunks(std::size_t chunks, unsigned threads, Bound&& bound, Format&& format) {
+  std::size_t total = 0, largest = 0;
+  for (std::size_t i = 0; i < chunks; ++i) {
+    total += bound(i);
+    largest = std::max(largest, bound(i));
+  }
+  std::string out;
+  out.reserve(total + 1);  // the bytes stay untouched (and unpaid for) past the text's end;
+                           // the 1: the final newline the command adds
+  struct Done {
+    std::string text;
+    std::exception_ptr error;
+    std::atomic<bool> ready{false};
+  };
+  const std::unique_ptr<Done[]> done(new Done[chunks]);
+  std::atomic<std::size_t> next_claim{0};
+  const auto format_into = [&](std::string& scratch, std::size_t i) -> std::size_t {
+    if (scratch.size() < largest) scratch.resize(largest);
+    return static_cast<std::size_t>(format(i, scratch.data()) - scratch.data());
+  };
+  // Formats claimed chunks for the appender; stops at its first failure, which the appender
+  // rethrows when it reaches that chunk.
+  const auto helper = [&] {
+    std::string scratch;
+    for (std::size_t i = next_claim++; i < chunks; i = next_claim++) {
+      try {
+        done[i].text.assign(scratch.data(), format_into(scratch, i));
+      } catch (...) {
+        done[i].error = std::current_exception();
+      }
+      done[i].ready.store(true, std::memory_order_release);
+      done[i].ready.notify_one();
+      if (done[i].error) return;
+    }
+  };
+  const auto appender = [&] {
+    std::string scratch;
+    std::size_t next = 0;  // the next chunk to append
+    while (next < chunks) {
+      if (done[next].ready.load(std::memory_order_acquire)) {
+        if (done[next].error) std::rethrow_exception(done[next].error);
+        out += done[next].text;
+        done[next].text = std::string();
+        ++next;
+        continue;
+      }
+      const std::size_t i = next_claim++;
+      if (i == next) {
+        out.append(scratch.data(), format_into(scratch, i));
+        ++next;
+      } else if (i < chunks) {
+        done[i].text.assign(scratch.data(), format_into(scratch, i));
+        done[i].ready.store(true, std::memory_order_release);
+      } else {
+        done[next].ready.wait(false, std::memory_order_acquire);
+      }
+    }
+  };
+  const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(std::max(1u, threads), chunks));
+  run_tasks(workers, workers, [&](std::size_t task) {
+    if (task == 0) {
+      appender();
+    } else {
+      helper();
+    }
+  });
+  return out;
+}
+
+}  // namespace mk::io_detail
