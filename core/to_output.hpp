@@ -190,14 +190,20 @@ template <Kernel K, Kernel V>
 Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsigned threads = 1) {
   Output out;
   out.unbounded = r.unbounded;
-  const std::vector<std::vector<Point>> rounded = detail::rounded_cycles(r, threads);
+  std::vector<std::vector<Point>> rounded = detail::rounded_cycles(r, threads);
+  const std::vector<std::vector<int>> polygon_cycles = result_polygon_cycles(r);
+  out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles, threads);
+  // The rounded cycles move into `irreducible` once checked (a copy of every vertex less:
+  // fresh pages cost more than the copying); the polygons copy them.
+  out.irreducible.resize(r.cycles.size());
   for (std::size_t i = 0; i < r.cycles.size(); ++i) {
     const auto& c = r.cycles[i];
-    OutputIrreducible o;
+    OutputIrreducible& o = out.irreducible[i];
     o.type = c.type;
-    o.vertices = rounded[i];
-    for (const int id : c.vertices) {
-      if (K::is_exact && exact_coordinates) {
+    o.vertices = std::move(rounded[i]);
+    if (K::is_exact && exact_coordinates) {
+      o.exact.reserve(2 * c.vertices.size());
+      for (const int id : c.vertices) {
         const auto e = K::exact_coordinates(r.vertex(id));
         o.exact.push_back(e[0]);
         o.exact.push_back(e[1]);
@@ -205,17 +211,16 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsig
     }
     if (c.vertices.size() == 1) out.isolated_points.push_back(o.vertices[0]);
     if (c.vertices.size() == 2) out.dangling_edges.push_back({o.vertices[0], o.vertices[1]});
-    out.irreducible.push_back(std::move(o));
   }
-  const std::vector<std::vector<int>> polygon_cycles = result_polygon_cycles(r);
   if (!r.unbounded) {
+    out.polygons.reserve(polygon_cycles.size());
     for (const auto& cycles : polygon_cycles) {
       OgcPolygon p{out.irreducible[static_cast<std::size_t>(cycles[0])].vertices, {}};
+      p.holes.reserve(cycles.size() - 1);
       for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(out.irreducible[static_cast<std::size_t>(cycles[h])].vertices);
       out.polygons.push_back(std::move(p));
     }
   }
-  out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles, threads);
   return out;
 }
 
