@@ -9,14 +9,33 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <memory>
 #include <string>
 #include <vector>
 
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
 #include "core/parallel.hpp"
 
 namespace mk::io_detail {
+
+// Fresh pages of a large text cost more than writing its bytes (a fault and a cleared page
+// per 4 kB: 15 of blob 1e6's 35 MB text's first 50 ms): asks for 2 MB pages where the kernel
+// gives them on request (Linux's transparent huge pages in "madvise" mode). Only a hint: a
+// refusal changes nothing.
+inline void advise_huge_pages([[maybe_unused]] char* data, [[maybe_unused]] std::size_t size) {
+#ifdef __linux__
+  constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
+  if (size < 4 * kHuge) return;
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + size) & ~(kHuge - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#endif
+}
 
 // Chunks are formatted into a scratch buffer of the largest bound (kept in cache, grown at
 // most once per thread), then appended to the result or kept for it.
@@ -30,6 +49,7 @@ std::string join_chunks(std::size_t chunks, unsigned threads, Bound&& bound, For
   std::string out;
   out.reserve(total + 1);  // the bytes stay untouched (and unpaid for) past the text's end;
                            // the 1: the final newline the command adds
+  advise_huge_pages(out.data(), out.capacity());
   struct Done {
     std::string text;
     std::exception_ptr error;
