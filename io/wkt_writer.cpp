@@ -51,8 +51,8 @@ char* write_separator(char* out) {
 }
 
 // The ring's direction, decided exactly, so that a needle-thin shell is never written clockwise.
-bool is_reversed(const Ring& ring, bool counterclockwise) {
-  const int orientation = io_detail::ring_orientation(ring);
+bool is_reversed(const Ring& ring, bool counterclockwise, unsigned threads = 1) {
+  const int orientation = io_detail::ring_orientation(ring, threads);
   return orientation != 0 && (orientation > 0) != counterclockwise;
 }
 
@@ -103,7 +103,8 @@ std::size_t polygon_points(const OgcPolygon& polygon) {
 // The text as items in order, and where the chunks start.
 class WktPlan {
  public:
-  WktPlan(const MultiPolygon* polygons, const Output* output) : polygons_(polygons), output_(output) {}
+  WktPlan(const MultiPolygon* polygons, const Output* output, unsigned threads)
+      : polygons_(polygons), output_(output), threads_(resolve_threads(threads)) {}
 
   void literal(std::string_view s) { add({Kind::literal, s}, 0, s.size()); }
 
@@ -132,9 +133,9 @@ class WktPlan {
     }
   }
 
-  std::string str(unsigned threads) {
+  std::string str() {
     if (chunk_items_ > 0 || starts_.empty()) cut();
-    const unsigned t = points_ >= kParallelPoints ? resolve_threads(threads) : 1;
+    const unsigned t = points_ >= kParallelPoints ? threads_ : 1;
     return io_detail::join_chunks(
         bounds_.size(), t, [&](std::size_t c) { return bounds_[c]; },
         [&](std::size_t c, char* out) {
@@ -172,7 +173,7 @@ class WktPlan {
   // A large ring in runs of kChunkPoints visits.
   void ring_runs(const Ring& ring, bool counterclockwise) {
     literal("(");
-    const bool reverse = !ring.empty() && is_reversed(ring, counterclockwise);
+    const bool reverse = !ring.empty() && is_reversed(ring, counterclockwise, threads_);
     const std::size_t visits = ring.empty() ? 0 : ring.size() + 1;
     for (std::size_t from = 0; from < visits; from += kChunkPoints) {
       const std::size_t to = std::min(visits, from + kChunkPoints);
@@ -250,6 +251,7 @@ class WktPlan {
 
   const MultiPolygon* polygons_;
   const Output* output_;
+  unsigned threads_;
   std::vector<Item> items_;
   std::vector<std::size_t> starts_;  // the chunks' first items, and the end
   std::vector<std::size_t> bounds_;  // the chunks' most bytes
@@ -260,9 +262,9 @@ class WktPlan {
 
 std::string write_wkt(const MultiPolygon& polygons, unsigned threads) {
   if (polygons.empty()) return "POLYGON EMPTY";
-  WktPlan plan(&polygons, nullptr);
+  WktPlan plan(&polygons, nullptr, threads);
   plan.polygons();
-  return plan.str(threads);
+  return plan.str();
 }
 
 std::string write_wkt(const Output& output, unsigned threads) {
@@ -273,13 +275,13 @@ std::string write_wkt(const Output& output, unsigned threads) {
   if (output.dangling_edges.empty() && output.isolated_points.empty()) {
     return write_wkt(output.polygons, threads);
   }
-  WktPlan plan(&output.polygons, &output);
+  WktPlan plan(&output.polygons, &output, threads);
   plan.literal("GEOMETRYCOLLECTION (");
   if (!output.polygons.empty()) plan.polygons();
   plan.dangling_edges(!output.polygons.empty());
   plan.isolated_points(!output.polygons.empty() || !output.dangling_edges.empty());
   plan.literal(")");
-  return plan.str(threads);
+  return plan.str();
 }
 
 }  // namespace mk

@@ -148,6 +148,30 @@ TEST(ioWktWriter, ThreadsWriteTheSameBytes) {
   EXPECT_EQ(write_wkt(out.polygons, 2), write_wkt(out.polygons, 1));
 }
 
+// A large ring (its direction found on several threads) through its lowest vertex twice: a
+// big counterclockwise loop, then a small clockwise one from the same vertex. The turn at
+// the vertex depends on the pass; the whole area says counterclockwise, on any number of
+// threads, so the shell is written as given.
+TEST(ioWktWriter, LargeRingThroughItsLowestVertexTwice) {
+  const std::size_t n = 50'000;
+  Ring ring{{0, 0}};
+  for (std::size_t i = 1; i < n; ++i) {
+    const double t = 3.141592653589793 * (1 + 2 * static_cast<double>(i) / static_cast<double>(n));
+    ring.push_back({10 + 10 * std::cos(t), 10 * std::sin(t)});
+  }
+  for (const Point& p : {Point{0, 0}, Point{1, 1}, Point{2, 0}, Point{1, -1}}) ring.push_back(p);
+  const MultiPolygon mp{OgcPolygon{ring, {}}};
+  const std::string one = write_wkt(mp, 1);
+  const std::string small_loop_as_given = ", 0 0, 1 1, 2 0, 1 -1, 0 0))";
+  ASSERT_GT(one.size(), small_loop_as_given.size());
+  EXPECT_EQ(one.substr(one.size() - small_loop_as_given.size()), small_loop_as_given);
+  for (const unsigned threads : {0u, 2u, 3u}) EXPECT_EQ(write_wkt(mp, threads), one) << threads << " threads";
+  // As a hole it is turned around: the small loop comes first.
+  Output out;
+  out.polygons = {OgcPolygon{{{-1, -20}, {30, -20}, {30, 20}, {-1, 20}}, {ring}}};
+  EXPECT_NE(write_wkt(out, 2).find(", (0 0, 1 -1, 2 0, 1 1, 0 0, "), std::string::npos);
+}
+
 // Many small polygons (half of them clockwise, some with a hole) and many non-regular parts:
 // the writer groups them into chunks of a few thousand points, cut anywhere in the lists;
 // the text is the same on any number of threads and as written one by one here.
