@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <exception>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,22 @@ std::string join_chunks(std::size_t chunks, unsigned threads, Bound&& bound, For
   };
   const std::unique_ptr<Done[]> done(new Done[chunks]);
   std::atomic<std::size_t> next_claim{0};
+  // Texts kept for the appender reuse the buffers of texts already appended: fresh pages
+  // for every chunk cost more than formatting it.
+  std::mutex spare_mutex;
+  std::vector<std::string> spare;
+  const auto keep = [&](std::size_t i, const std::string& scratch, std::size_t size) {
+    std::string text;
+    {
+      const std::lock_guard<std::mutex> lock(spare_mutex);
+      if (!spare.empty()) {
+        text = std::move(spare.back());
+        spare.pop_back();
+      }
+    }
+    text.assign(scratch.data(), size);
+    done[i].text = std::move(text);
+  };
   const auto format_into = [&](std::string& scratch, std::size_t i) -> std::size_t {
     if (scratch.size() < largest) scratch.resize(largest);
     return static_cast<std::size_t>(format(i, scratch.data()) - scratch.data());
@@ -67,7 +84,7 @@ std::string join_chunks(std::size_t chunks, unsigned threads, Bound&& bound, For
     std::string scratch;
     for (std::size_t i = next_claim++; i < chunks; i = next_claim++) {
       try {
-        done[i].text.assign(scratch.data(), format_into(scratch, i));
+        keep(i, scratch, format_into(scratch, i));
       } catch (...) {
         done[i].error = std::current_exception();
       }
@@ -83,7 +100,10 @@ std::string join_chunks(std::size_t chunks, unsigned threads, Bound&& bound, For
       if (done[next].ready.load(std::memory_order_acquire)) {
         if (done[next].error) std::rethrow_exception(done[next].error);
         out += done[next].text;
-        done[next].text = std::string();
+        {
+          const std::lock_guard<std::mutex> lock(spare_mutex);
+          spare.push_back(std::move(done[next].text));
+        }
         ++next;
         continue;
       }
@@ -92,7 +112,7 @@ std::string join_chunks(std::size_t chunks, unsigned threads, Bound&& bound, For
         out.append(scratch.data(), format_into(scratch, i));
         ++next;
       } else if (i < chunks) {
-        done[i].text.assign(scratch.data(), format_into(scratch, i));
+        keep(i, scratch, format_into(scratch, i));
         done[i].ready.store(true, std::memory_order_release);
       } else {
         done[next].ready.wait(false, std::memory_order_acquire);
