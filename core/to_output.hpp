@@ -192,9 +192,29 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsig
   out.unbounded = r.unbounded;
   std::vector<std::vector<Point>> rounded = detail::rounded_cycles(r, threads);
   const std::vector<std::vector<int>> polygon_cycles = result_polygon_cycles(r);
-  out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles, threads);
-  // The rounded cycles move into `irreducible` once checked (a copy of every vertex less:
-  // fresh pages cost more than the copying); the polygons copy them.
+  // The polygons copy the rounded cycles while the validity check reads them, on a thread of
+  // their own for a large output (the check of a result with few crossings runs on one);
+  // then the cycles move into `irreducible` (a copy of every vertex less: fresh pages cost
+  // more than copying).
+  std::size_t vertices = 0;
+  for (const auto& c : rounded) vertices += c.size();
+  const auto copy_polygons = [&] {
+    if (r.unbounded) return;
+    out.polygons.reserve(polygon_cycles.size());
+    for (const auto& cycles : polygon_cycles) {
+      OgcPolygon p{rounded[static_cast<std::size_t>(cycles[0])], {}};
+      p.holes.reserve(cycles.size() - 1);
+      for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(rounded[static_cast<std::size_t>(cycles[h])]);
+      out.polygons.push_back(std::move(p));
+    }
+  };
+  run_tasks(threads_for(vertices, threads) > 1 ? 2 : 1, 2, [&](std::size_t task) {
+    if (task == 0) {
+      out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles, threads);
+    } else {
+      copy_polygons();
+    }
+  });
   out.irreducible.resize(r.cycles.size());
   for (std::size_t i = 0; i < r.cycles.size(); ++i) {
     const auto& c = r.cycles[i];
@@ -211,15 +231,6 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsig
     }
     if (c.vertices.size() == 1) out.isolated_points.push_back(o.vertices[0]);
     if (c.vertices.size() == 2) out.dangling_edges.push_back({o.vertices[0], o.vertices[1]});
-  }
-  if (!r.unbounded) {
-    out.polygons.reserve(polygon_cycles.size());
-    for (const auto& cycles : polygon_cycles) {
-      OgcPolygon p{out.irreducible[static_cast<std::size_t>(cycles[0])].vertices, {}};
-      p.holes.reserve(cycles.size() - 1);
-      for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(out.irreducible[static_cast<std::size_t>(cycles[h])].vertices);
-      out.polygons.push_back(std::move(p));
-    }
   }
   return out;
 }
