@@ -220,14 +220,41 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsig
   // The boxes' half-sizes are made while rounding when the box certificate may be asked.
   RoundingHalves halves;
   const bool many_crossings = static_cast<std::size_t>(r.arrangement.num_crossings()) > kFewCrossingsForExactCertificate;
-  const std::vector<std::vector<Point>> rounded = detail::rounded_cycles(r, threads, many_crossings ? &halves : nullptr);
+  std::vector<std::vector<Point>> rounded = detail::rounded_cycles(r, threads, many_crossings ? &halves : nullptr);
+  const std::vector<std::vector<int>> polygon_cycles = result_polygon_cycles(r);
+  // The polygons copy the rounded cycles while the validity check reads them, on a thread of
+  // their own for a large output (the check of a result with few crossings runs on one);
+  // then the cycles move into `irreducible` (a copy of every vertex less: fresh pages cost
+  // more than copying).
+  std::size_t vertices = 0;
+  for (const auto& c : rounded) vertices += c.size();
+  const auto copy_polygons = [&] {
+    if (r.unbounded) return;
+    out.polygons.reserve(polygon_cycles.size());
+    for (const auto& cycles : polygon_cycles) {
+      OgcPolygon p{rounded[static_cast<std::size_t>(cycles[0])], {}};
+      p.holes.reserve(cycles.size() - 1);
+      for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(rounded[static_cast<std::size_t>(cycles[h])]);
+      out.polygons.push_back(std::move(p));
+    }
+  };
+  run_tasks(threads_for(vertices, threads) > 1 ? 2 : 1, 2, [&](std::size_t task) {
+    if (task == 0) {
+      out.rounded_valid =
+          is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles, threads, many_crossings ? &halves : nullptr);
+    } else {
+      copy_polygons();
+    }
+  });
+  out.irreducible.resize(r.cycles.size());
   for (std::size_t i = 0; i < r.cycles.size(); ++i) {
     const auto& c = r.cycles[i];
-    OutputIrreducible o;
+    OutputIrreducible& o = out.irreducible[i];
     o.type = c.type;
-    o.vertices = rounded[i];
-    for (const int id : c.vertices) {
-      if (K::is_exact && exact_coordinates) {
+    o.vertices = std::move(rounded[i]);
+    if (K::is_exact && exact_coordinates) {
+      o.exact.reserve(2 * c.vertices.size());
+      for (const int id : c.vertices) {
         const auto e = K::exact_coordinates(r.vertex(id));
         o.exact.push_back(e[0]);
         o.exact.push_back(e[1]);
@@ -235,17 +262,7 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsig
     }
     if (c.vertices.size() == 1) out.isolated_points.push_back(o.vertices[0]);
     if (c.vertices.size() == 2) out.dangling_edges.push_back({o.vertices[0], o.vertices[1]});
-    out.irreducible.push_back(std::move(o));
   }
-  const std::vector<std::vector<int>> polygon_cycles = result_polygon_cycles(r);
-  if (!r.unbounded) {
-    for (const auto& cycles : polygon_cycles) {
-      OgcPolygon p{out.irreducible[static_cast<std::size_t>(cycles[0])].vertices, {}};
-      for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(out.irreducible[static_cast<std::size_t>(cycles[h])].vertices);
-      out.polygons.push_back(std::move(p));
-    }
-  }
-  out.rounded_valid = is_valid_rounded_result_ogc<K, V>(r, rounded, polygon_cycles, threads, many_crossings ? &halves : nullptr);
   return out;
 }
 

@@ -148,5 +148,74 @@ TEST(ioWktWriter, ThreadsWriteTheSameBytes) {
   EXPECT_EQ(write_wkt(out.polygons, 2), write_wkt(out.polygons, 1));
 }
 
+// A large ring (its direction found on several threads) through its lowest vertex twice: a
+// big counterclockwise loop, then a small clockwise one from the same vertex. The turn at
+// the vertex depends on the pass; the whole area says counterclockwise, on any number of
+// threads, so the shell is written as given.
+TEST(ioWktWriter, LargeRingThroughItsLowestVertexTwice) {
+  const std::size_t n = 50'000;
+  Ring ring{{0, 0}};
+  for (std::size_t i = 1; i < n; ++i) {
+    const double t = 3.141592653589793 * (1 + 2 * static_cast<double>(i) / static_cast<double>(n));
+    ring.push_back({10 + 10 * std::cos(t), 10 * std::sin(t)});
+  }
+  for (const Point& p : {Point{0, 0}, Point{1, 1}, Point{2, 0}, Point{1, -1}}) ring.push_back(p);
+  const MultiPolygon mp{OgcPolygon{ring, {}}};
+  const std::string one = write_wkt(mp, 1);
+  const std::string small_loop_as_given = ", 0 0, 1 1, 2 0, 1 -1, 0 0))";
+  ASSERT_GT(one.size(), small_loop_as_given.size());
+  EXPECT_EQ(one.substr(one.size() - small_loop_as_given.size()), small_loop_as_given);
+  for (const unsigned threads : {0u, 2u, 3u}) EXPECT_EQ(write_wkt(mp, threads), one) << threads << " threads";
+  // As a hole it is turned around: the small loop comes first.
+  Output out;
+  out.polygons = {OgcPolygon{{{-1, -20}, {30, -20}, {30, 20}, {-1, 20}}, {ring}}};
+  EXPECT_NE(write_wkt(out, 2).find(", (0 0, 1 -1, 2 0, 1 1, 0 0, "), std::string::npos);
+}
+
+// Many small polygons (half of them clockwise, some with a hole) and many non-regular parts:
+// the writer groups them into chunks of a few thousand points, cut anywhere in the lists;
+// the text is the same on any number of threads and as written one by one here.
+TEST(ioWktWriter, ManySmallPartsWriteTheSameBytesOnThreads) {
+  const auto text = [](double v) {
+    char buf[32];
+    if (v == 0) v = 0;
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+  };
+  const auto point = [&](const Point& p) { return text(p.x) + " " + text(p.y); };
+  Output out;
+  std::string expected = "GEOMETRYCOLLECTION (MULTIPOLYGON (";
+  for (int i = 0; i < 30'000; ++i) {
+    const double x = 3.0 * i + 0.1, y = -0.7 * i;
+    const Point a{x, y}, b{x + 1, y}, c{x, y + 1.5};
+    const bool clockwise = i % 2 == 1;
+    OgcPolygon p{clockwise ? Ring{a, c, b} : Ring{a, b, c}, {}};
+    expected += (i ? ", ((" : "((") + point(a) + ", " + point(b) + ", " + point(c) + ", " + point(a) + ")";
+    if (i % 7 == 0) {
+      const Point h0{x + 0.25, y + 0.25}, h1{x + 0.5, y + 0.25}, h2{x + 0.25, y + 0.5};
+      p.holes.push_back({h0, h1, h2});  // counterclockwise: written turned around
+      expected += ", (" + point(h0) + ", " + point(h2) + ", " + point(h1) + ", " + point(h0) + ")";
+    }
+    expected += ")";
+    out.polygons.push_back(std::move(p));
+  }
+  expected += ")";
+  for (int i = 0; i < 5'000; ++i) {
+    out.dangling_edges.push_back({{-1.0 * i, 0.5}, {-1.0 * i, 1e-9 * i}});
+    expected += ", LINESTRING (" + point(out.dangling_edges.back().first) + ", " + point(out.dangling_edges.back().second) + ")";
+  }
+  for (int i = 0; i < 5'000; ++i) {
+    out.isolated_points.push_back({1e20 * i, -0.0});
+    expected += ", POINT (" + point(out.isolated_points.back()) + ")";
+  }
+  expected += ")";
+  for (const unsigned threads : {1u, 2u, 3u}) EXPECT_EQ(write_wkt(out, threads), expected) << threads << " threads";
+  out.polygons.clear();  // the non-regular parts alone: the first has no ", " before it
+  const std::string parts = write_wkt(out, 2);
+  EXPECT_EQ(parts.rfind("GEOMETRYCOLLECTION (LINESTRING (0 0.5, 0 0), LINESTRING (-1 0.5, -1 1e-09)", 0), 0u) << parts.substr(0, 80);
+  EXPECT_EQ(parts, write_wkt(out, 1));
+  out.dangling_edges.clear();
+  EXPECT_EQ(write_wkt(out, 2).rfind("GEOMETRYCOLLECTION (POINT (0 0), POINT (1e+20 0)", 0), 0u);
+}
+
 }  // namespace
 }  // namespace mk
