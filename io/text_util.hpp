@@ -3,11 +3,10 @@
 // Preconditions: offsets are within the text they refer to (clamped otherwise).
 #pragma once
 
+#include <charconv>
 #include <cstddef>
 #include <string>
 #include <string_view>
-
-#include "io/shortest_double.hpp"
 
 namespace mk::io_detail {
 
@@ -37,13 +36,14 @@ inline std::string describe_position(std::string_view text, std::size_t offset) 
   return "line " + std::to_string(p.line) + ", column " + std::to_string(p.column);
 }
 
-// Shortest text that reads back as the same double (the bytes of std::to_chars without a
-// format, written faster): the writers never lose a bit, and 0.1 stays "0.1". Negative zero
-// is written "0": it is the same coordinate, and "-0" only puzzles readers.
+// Shortest text that reads back as the same double (std::to_chars without a format):
+// the writers never lose a bit, and 0.1 stays "0.1". Negative zero is written "0": it is
+// the same coordinate, and "-0" only puzzles readers.
 inline void append_double(std::string& out, double v) {
-  char buf[kShortestDoubleRoom];
+  char buf[32];
   if (v == 0) v = 0;
-  out.append(buf, write_shortest(buf, v));
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
 }
 
 inline std::string format_double(double v) {
