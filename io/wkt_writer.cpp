@@ -5,6 +5,7 @@
 // points, non-regular parts) cut into chunks of about kChunkPoints points, formatted on
 // several threads for a large output and joined in order: the same bytes on any number.
 #include <algorithm>
+#include <charconv>
 #include <cstring>
 #include <string>
 #include <string_view>
@@ -14,24 +15,28 @@
 #include "core/parallel.hpp"
 #include "io/chunked_text.hpp"
 #include "io/ring_rules.hpp"
-#include "io/shortest_double.hpp"
 #include "io/wkt.hpp"
 
 namespace mk {
 
 namespace {
 
-using io_detail::kShortestDoubleMaxChars;
-using io_detail::kShortestDoubleRoom;
+// The longest shortest round-trip text of a double: "-2.2250738585072014e-308".
+constexpr std::size_t kShortestDoubleMaxChars = 24;
+// The bytes past a coordinate's start that writing it may touch (std::to_chars: its text).
+constexpr std::size_t kShortestDoubleRoom = kShortestDoubleMaxChars;
+
+// Shortest round-trip text of v at `out` (room for kShortestDoubleMaxChars bytes).
+char* write_shortest(char* out, double v) { return std::to_chars(out, out + kShortestDoubleMaxChars, v).ptr; }
 
 // Most bytes a point's text takes, with the ", " before it. A chunk's bound adds
-// kShortestDoubleRoom: the stores of write_shortest reach that far past a coordinate's start.
+// kShortestDoubleRoom: writing a coordinate may touch that far past its start.
 constexpr std::size_t kVisitRoom = 2 + 2 * kShortestDoubleMaxChars + 1;
 constexpr std::size_t kChunkPoints = 4096;      // about 160 kB of text: formatted in cache
 constexpr std::size_t kParallelPoints = 1 << 16;  // below, one thread
 
 // "-0" is written "0": the same coordinate, and "-0" only puzzles readers.
-char* write_coordinate(char* out, double v) { return io_detail::write_shortest(out, v == 0 ? 0.0 : v); }
+char* write_coordinate(char* out, double v) { return write_shortest(out, v == 0 ? 0.0 : v); }
 
 char* write_point(char* out, const Point& p) {
   out = write_coordinate(out, p.x);
