@@ -127,7 +127,11 @@ class HashEdgeTable {
     *link = static_cast<int>(entries_.size());
     // Made in place from e's fields: copying e whole would wait for the narrow stores that
     // just made it (GCC 12).
-    entries_.emplace_back(e.from, e.to, e.dir, true);
+    EfEntry& made = entries_.emplace_back();  // in place, fields set (aggregates: no parenthesised init in clang 14)
+    made.from = e.from;
+    made.to = e.to;
+    made.dir = e.dir;
+    made.alive = true;
     next_.push_back(-1);
   }
 

@@ -32,9 +32,15 @@ inline SweepItem sweep_item(int src, int dst, int group, bool continues) {
 }
 
 // Appends the item of src -> dst, made in place: push_back(sweep_item(...)) builds it on the
-// stack and copies it with wide loads that wait for the narrow stores (GCC 12).
+// stack and copies it with wide loads that wait for the narrow stores (GCC 12). Fields are
+// set one by one: clang 14 (the fuzzers' compiler) has no parenthesised aggregate init.
 inline void add_sweep_item(std::vector<SweepItem>& items, int src, int dst, int group, bool continues) {
-  items.emplace_back(std::min(src, dst), std::max(src, dst), group, src < dst, continues);
+  SweepItem& item = items.emplace_back();
+  item.lo = std::min(src, dst);
+  item.hi = std::max(src, dst);
+  item.group = group;
+  item.forward = src < dst;
+  item.continues = continues;
 }
 
 enum class PairSearch : unsigned char { sweep, all_pairs };

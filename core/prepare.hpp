@@ -85,8 +85,8 @@ template <Kernel K>
 void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
                           std::vector<IdRing>& rings, const char* poly_name, PairSearch search, unsigned threads = 1) {
   struct EdgeRef {
-    int ring;
-    int k;
+    int ring = -1;
+    int k = -1;
   };
   std::size_t num_edges = 0;
   for (const auto& ring : rings) num_edges += ring.ids.size() < 2 ? 0 : ring.ids.size();
@@ -101,7 +101,9 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
       const int u = ids[k];
       const int w = ids[k + 1 < ids.size() ? k + 1 : 0];
       add_sweep_item(items, u, w, 0, k > 0);
-      refs.emplace_back(r, static_cast<int>(k));
+      EdgeRef& ref = refs.emplace_back();
+      ref.ring = r;
+      ref.k = static_cast<int>(k);
     }
   }
   // Per part of the pair search (see CandidatePairs): points of the polygon on its own

@@ -21,8 +21,14 @@ void build_vertex_rings(Arrangement<K>& arr) {
     for (int c = 0; c < static_cast<int>(poly.cycles.size()); ++c) {
       const auto& cycle = poly.cycles[c];
       // Made in place, without a division per vertex for the wrap-around (cycles have 2+ vertices).
-      for (std::size_t i = 0; i + 1 < cycle.size(); ++i) poly.edges.emplace_back(cycle[i], cycle[i + 1]);
-      poly.edges.emplace_back(cycle.back(), cycle.front());
+      // In place, fields set (no parenthesised aggregate init in clang 14, the fuzzers').
+      const auto add = [&](int src, int dst) {
+        Edge& e = poly.edges.emplace_back();
+        e.src = src;
+        e.dst = dst;
+      };
+      for (std::size_t i = 0; i + 1 < cycle.size(); ++i) add(cycle[i], cycle[i + 1]);
+      add(cycle.back(), cycle.front());
       poly.cycle_first_edge.push_back(static_cast<int>(poly.edges.size()));
     }
   }

@@ -230,6 +230,27 @@ FillRule to_fill_rule(Rule r) {
   return FillRule::evenodd;
 }
 
+// Random case i: two self-crossing inputs of the families, moved together exactly, with
+// their rings in rationals and a description for failure messages.
+struct DrawnCase {
+  Polygon a, b;
+  std::vector<QRing> qa, qb;
+  std::string what;
+};
+
+DrawnCase draw_case(long i, Rng& rng) {
+  const std::string fa = kFamilies[static_cast<std::size_t>(i) % kFamilies.size()];
+  const std::string fb = kFamilies[static_cast<std::size_t>(uniform(rng, 0, long(kFamilies.size()) - 1))];
+  DrawnCase c;
+  c.a = self_crossing_input(fa, rng);
+  c.b = self_crossing_input(fb, rng);
+  transform(rng, c.a, c.b);
+  c.qa = q_rings(c.a);
+  c.qb = q_rings(c.b);
+  c.what = "case " + std::to_string(i) + " (" + fa + ", " + fb + "): A " + describe(c.a) + " B " + describe(c.b);
+  return c;
+}
+
 TEST(FillRuleOracle, EveryRuleAndOperationAgreesWithWindingNumbersAtSamplePoints) {
   const std::uint64_t s = seed();
   const long cases = count_from("MK_FILL_CASES", kDefaultCases);
@@ -237,15 +258,14 @@ TEST(FillRuleOracle, EveryRuleAndOperationAgreesWithWindingNumbersAtSamplePoints
   Rng rng(s);
   long checked_points = 0, operations = 0;
   for (long i = 0; i < cases; ++i) {
-    const std::string fa = kFamilies[static_cast<std::size_t>(i) % kFamilies.size()];
-    const std::string fb = kFamilies[static_cast<std::size_t>(uniform(rng, 0, long(kFamilies.size()) - 1))];
-    Polygon a = self_crossing_input(fa, rng);
-    Polygon b = self_crossing_input(fb, rng);
-    transform(rng, a, b);
-    const std::vector<QRing> qa = q_rings(a), qb = q_rings(b);
+    const DrawnCase drawn = draw_case(i, rng);
+    const Polygon& a = drawn.a;
+    const Polygon& b = drawn.b;
+    const std::vector<QRing>& qa = drawn.qa;
+    const std::vector<QRing>& qb = drawn.qb;
+    const std::string& what = drawn.what;
     std::vector<QRing> both = qa;
     both.insert(both.end(), qb.begin(), qb.end());
-    const std::string what = "case " + std::to_string(i) + " (" + fa + ", " + fb + "): A " + describe(a) + " B " + describe(b);
     for (const Rule rule : kRules) {
       for (const Operation op : kOps) {
         ++operations;
@@ -309,15 +329,14 @@ TEST(FillRuleOracle, NonRegularAgreesWithTheClosuresAtSamplePoints) {
   Rng rng(s);
   long checked = 0, in_lower_dimensional = 0;
   for (long i = 0; i < cases; ++i) {
-    const std::string fa = kFamilies[static_cast<std::size_t>(i) % kFamilies.size()];
-    const std::string fb = kFamilies[static_cast<std::size_t>(uniform(rng, 0, long(kFamilies.size()) - 1))];
-    Polygon a = self_crossing_input(fa, rng);
-    Polygon b = self_crossing_input(fb, rng);
-    transform(rng, a, b);
-    const std::vector<QRing> qa = q_rings(a), qb = q_rings(b);
+    const DrawnCase drawn = draw_case(i, rng);
+    const Polygon& a = drawn.a;
+    const Polygon& b = drawn.b;
+    const std::vector<QRing>& qa = drawn.qa;
+    const std::vector<QRing>& qb = drawn.qb;
+    const std::string& what = drawn.what;
     const Region ra{qa, false}, rb{qb, false};  // for their rings' directions only
     const std::vector<const Region*> inputs{&ra, &rb};
-    const std::string what = "case " + std::to_string(i) + " (" + fa + ", " + fb + "): A " + describe(a) + " B " + describe(b);
     for (const Rule rule : kRules) {
       for (const Operation op : kOps) {
         BooleanOptions o;
