@@ -6,11 +6,8 @@
 #include <gmpxx.h>
 
 #include <cstddef>
-#include <utility>
-#include <vector>
 
 #include "arithmetic/kernels/exact_kernel.hpp"
-#include "core/parallel.hpp"
 #include "io/text_util.hpp"
 
 namespace mk::io_detail {
@@ -99,39 +96,17 @@ void remove_repeated_vertices(Ring& ring) {
   ring.resize(kept);
 }
 
-int ring_orientation(const Ring& ring, unsigned threads) {
+int ring_orientation(const Ring& ring) {
   if (ring.size() < 3) return 0;
-  const std::size_t n = ring.size();
-  // The first lowest vertex, and how many times the ring comes to it (runs of repeated
-  // copies count once), over blocks on several threads for a large ring: per-block firsts,
-  // the earliest of the equal ones, are the whole ring's first.
-  const unsigned t = threads_for(n, threads);
-  const std::size_t parts = t > 1 ? 4 * static_cast<std::size_t>(t) : 1;
-  const auto block = [&](std::size_t k) { return std::pair{n * k / parts, n * (k + 1) / parts}; };
-  std::vector<std::size_t> lows(parts);
-  run_tasks(t, parts, [&](std::size_t k) {
-    const auto [begin, end] = block(k);
-    std::size_t low = begin;
-    for (std::size_t i = begin + 1; i < end; ++i) {
-      if (lexicographically_less(ring[i], ring[low])) low = i;
-    }
-    lows[k] = low;
-  });
-  std::size_t low = lows[0];
-  for (const std::size_t l : lows) {
-    if (lexicographically_less(ring[l], ring[low])) low = l;
+  std::size_t low = 0;
+  for (std::size_t i = 1; i < ring.size(); ++i) {
+    if (lexicographically_less(ring[i], ring[low])) low = i;
   }
-  std::vector<std::size_t> counts(parts);
-  run_tasks(t, parts, [&](std::size_t k) {
-    const auto [begin, end] = block(k);
-    std::size_t visits = 0;
-    for (std::size_t i = begin; i < end; ++i) visits += ring[i] == ring[low] && !(ring[(i + n - 1) % n] == ring[low]);
-    counts[k] = visits;
-  });
-  std::size_t visits = 0;
-  for (const std::size_t c : counts) visits += c;
   // A ring that passes through its extreme vertex twice (touching itself there) turns there
   // once per pass, and the turns may differ: only its whole area decides.
+  const std::size_t n = ring.size();
+  std::size_t visits = 0;  // runs of repeated copies count once
+  for (std::size_t i = 0; i < n; ++i) visits += ring[i] == ring[low] && !(ring[(i + n - 1) % n] == ring[low]);
   if (visits > 1) return exact_area_sign(ring);
   // Neighbours equal to the extreme vertex (repeated vertices) are skipped.
   std::size_t prev = (low + n - 1) % n;

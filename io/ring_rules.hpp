@@ -27,9 +27,8 @@ void remove_repeated_vertices(Ring& ring);
 // The exact sign of the ring's signed area: +1 counterclockwise, -1 clockwise, 0 for a
 // ring of zero area. One exact (adaptive) orientation test at the lexicographically lowest
 // vertex decides it, GMP rationals the whole area only when that test is degenerate, so a
-// million-vertex ring costs two passes of double comparisons, on `threads` (0: every core)
-// for a large ring.
-int ring_orientation(const Ring& ring, unsigned threads = 1);
+// million-vertex ring costs one pass of double comparisons.
+int ring_orientation(const Ring& ring);
 
 // Calls visit(point, is_first) for the ring in closed form (the first vertex repeated at the
 // end), reversed if needed so that it runs counterclockwise or clockwise as asked. A ring
