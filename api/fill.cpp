@@ -100,6 +100,13 @@ BooleanOutput dispatch_fill(const GroupedRings& in, const BooleanOptions& o, InR
   return api_detail::with_kernel(o.kernel, [&]<class K>(std::type_identity<K>) { return run_fill<K>(in, o, in_result, in_closed); });
 }
 
+// One group read by `rule` (union-all, make-valid): a face is in the result when filled, a
+// point in the closed result when a face around it is.
+BooleanOutput dispatch_one_region(const GroupedRings& in, const BooleanOptions& o, FillRule rule) {
+  const auto filled = [=](const int* w) { return is_filled(rule, w[0]); };
+  return dispatch_fill(in, o, filled, [=](const Faces& faces) { return std::any_of(faces.begin(), faces.end(), filled); });
+}
+
 GroupedRings rings_of_parts(const MultiPolygon& parts, FillRule rule, bool one_group) {
   GroupedRings g;
   for (const OgcPolygon& part : parts) {
@@ -160,10 +167,7 @@ BooleanOutput compute_with_fill_rule(const Polygon& a, const Polygon& b, const B
 
 BooleanOutput union_all(const MultiPolygon& parts, const BooleanOptions& o) {
   const FillRule rule = o.fill_rule.value_or(FillRule::union_);
-  return dispatch_fill(rings_of_parts(parts, rule, true), o, [=](const int* w) { return is_filled(rule, w[0]); },
-                       [=](const Faces& faces) {
-                         return std::any_of(faces.begin(), faces.end(), [&](const int* w) { return is_filled(rule, w[0]); });
-                       });
+  return dispatch_one_region(rings_of_parts(parts, rule, true), o, rule);
 }
 
 BooleanOutput intersection_all(const MultiPolygon& parts, const BooleanOptions& o) {
@@ -191,9 +195,7 @@ BooleanOutput make_valid(const MultiPolygon& input, const BooleanOptions& o) {
   const FillRule rule = o.fill_rule.value_or(FillRule::evenodd);
   GroupedRings in;
   add_group(in, fill_rule_polygon(input, rule));
-  return dispatch_fill(in, o, [=](const int* w) { return is_filled(rule, w[0]); }, [=](const Faces& faces) {
-    return std::any_of(faces.begin(), faces.end(), [&](const int* w) { return is_filled(rule, w[0]); });
-  });
+  return dispatch_one_region(in, o, rule);
 }
 
 }  // namespace mk

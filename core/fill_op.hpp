@@ -27,6 +27,30 @@
 
 namespace mk {
 
+// The ends of the links grouped by vertex: ends[begin[v], begin[v + 1]) are v's, each as a
+// code, 2 l at link l's lo and 2 l + 1 at its hi.
+struct LinkEnds {
+  std::vector<int> begin;
+  std::vector<int> ends;
+};
+
+inline LinkEnds link_ends_by_vertex(const std::vector<WindingLink>& links, int num_vertices) {
+  LinkEnds g;
+  g.begin.assign(static_cast<std::size_t>(num_vertices) + 1, 0);
+  for (const WindingLink& l : links) {
+    ++g.begin[l.lo + 1];
+    ++g.begin[l.hi + 1];
+  }
+  for (std::size_t v = 1; v < g.begin.size(); ++v) g.begin[v] += g.begin[v - 1];
+  g.ends.resize(static_cast<std::size_t>(g.begin.back()));
+  std::vector<int> fill(g.begin.begin(), g.begin.end() - 1);
+  for (std::size_t l = 0; l < links.size(); ++l) {
+    g.ends[fill[links[l].lo]++] = 2 * static_cast<int>(l);
+    g.ends[fill[links[l].hi]++] = 2 * static_cast<int>(l) + 1;
+  }
+  return g;
+}
+
 // The winding numbers of every group just left of every link (left of lo -> hi), flattened
 // link after link. Exact with exact kernels; KernelFailure when inexact predicates make the
 // counts around a vertex disagree.
@@ -42,21 +66,10 @@ std::vector<int> link_windings(const WindingArrangement<K>& wa) {
                        " links would need more than 2^27 winding numbers; give fewer inputs (intersection-all keeps one "
                        "per part)");
   }
-  // Link ends grouped by vertex (code 2 l at lo, 2 l + 1 at hi), each group in angular order.
-  std::vector<int> begin(static_cast<std::size_t>(arr.num_vertices()) + 1, 0);
-  for (const WindingLink& l : wa.links) {
-    ++begin[l.lo + 1];
-    ++begin[l.hi + 1];
-  }
-  for (std::size_t v = 1; v < begin.size(); ++v) begin[v] += begin[v - 1];
-  std::vector<int> ends(static_cast<std::size_t>(begin.back()));
-  {
-    std::vector<int> fill(begin.begin(), begin.end() - 1);
-    for (int l = 0; l < num_links; ++l) {
-      ends[fill[wa.links[l].lo]++] = 2 * l;
-      ends[fill[wa.links[l].hi]++] = 2 * l + 1;
-    }
-  }
+  // Link ends grouped by vertex, each group then put in angular order.
+  LinkEnds grouped = link_ends_by_vertex(wa.links, arr.num_vertices());
+  const std::vector<int>& begin = grouped.begin;
+  std::vector<int>& ends = grouped.ends;
   const DirectionOrder<K> angles(arr.points);
   const auto dir_of = [&](int code) {
     const Direction d = wa.links[code >> 1].dir;
@@ -164,19 +177,21 @@ BooleanResult<K> fill_op(WindingArrangement<K>&& wa, InResult&& in_result, const
   BooleanResult<K> res;
   Arrangement<K>& arr = res.arrangement;
   arr = std::move(wa.arr);
-  HashEdgeTable ef(2 * wa.links.size(), arr.num_vertices());
-  // The winding numbers right of every link (left minus the link's net count).
-  std::vector<int> right(left.size());
-  for (std::size_t i = 0; i < left.size(); ++i) right[i] = left[i] - wa.delta[i];
+  HashEdgeTable ef((in_closed != nullptr ? 2 : 1) * wa.links.size(), arr.num_vertices());
+  // The winding numbers right of link l: left minus the link's net count.
+  const auto right_of = [&](std::size_t l, int* out) {
+    for (int g = 0; g < G; ++g) out[g] = left[l * G + g] - wa.delta[l * G + g];
+  };
+  std::vector<int> right(static_cast<std::size_t>(G));
   std::vector<const int*> faces;
   for (std::size_t l = 0; l < wa.links.size(); ++l) {
     const int* wl = left.data() + l * G;
-    const int* wr = right.data() + l * G;
+    right_of(l, right.data());
     const bool in_left = in_result(wl);
     const WindingLink& k = wa.links[l];
-    if (in_left == in_result(wr)) {
+    if (in_left == in_result(right.data())) {
       if (in_closed == nullptr || in_left) continue;
-      faces.assign({wl, wr});
+      faces.assign({wl, right.data()});
       if (!(*in_closed)(faces)) continue;
       ef.insert(EfEntry{k.lo, k.hi, k.dir, true}, false);  // a two-sided part: both directions
       ef.insert(EfEntry{k.hi, k.lo, k.dir.reversed(), true}, false);
@@ -191,27 +206,21 @@ BooleanResult<K> fill_op(WindingArrangement<K>&& wa, InResult&& in_result, const
     // inside the result) is a one-sided part when the closed-set result holds it.
     std::vector<char> touched(static_cast<std::size_t>(arr.num_vertices()), 0);
     ef.for_each([&](const EfEntry& e) { touched[e.from] = touched[e.to] = 1; });
-    std::vector<int> begin(static_cast<std::size_t>(arr.num_vertices()) + 1, 0);
-    for (const WindingLink& k : wa.links) ++begin[k.lo + 1], ++begin[k.hi + 1];
-    for (std::size_t v = 1; v < begin.size(); ++v) begin[v] += begin[v - 1];
-    std::vector<int> around(static_cast<std::size_t>(begin.back()));
-    {
-      std::vector<int> fill(begin.begin(), begin.end() - 1);
-      for (std::size_t l = 0; l < wa.links.size(); ++l) {
-        around[fill[wa.links[l].lo]++] = static_cast<int>(l);
-        around[fill[wa.links[l].hi]++] = static_cast<int>(l);
-      }
-    }
+    const LinkEnds around = link_ends_by_vertex(wa.links, arr.num_vertices());
+    std::vector<int> sides;  // the windings right of each link at the vertex
     for (int v = 0; v < arr.num_vertices(); ++v) {
-      if (touched[v] || begin[v] == begin[v + 1]) continue;
+      const int b = around.begin[v], e = around.begin[v + 1];
+      if (touched[v] || b == e) continue;
+      sides.resize(static_cast<std::size_t>(e - b) * G);
       faces.clear();
-      bool any_in_result = false;
-      for (int i = begin[v]; i < begin[v + 1]; ++i) {
-        const std::size_t l = static_cast<std::size_t>(around[i]);
+      for (int i = b; i < e; ++i) {
+        const std::size_t l = static_cast<std::size_t>(around.ends[i] >> 1);
+        int* wr = sides.data() + static_cast<std::size_t>(i - b) * G;
+        right_of(l, wr);
         faces.push_back(left.data() + l * G);
-        faces.push_back(right.data() + l * G);
-        any_in_result = any_in_result || in_result(faces[faces.size() - 2]) || in_result(faces.back());
+        faces.push_back(wr);
       }
+      const bool any_in_result = std::any_of(faces.begin(), faces.end(), [&](const int* w) { return in_result(w); });
       if (!any_in_result && (*in_closed)(faces)) isolated.push_back(v);
     }
   }

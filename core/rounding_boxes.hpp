@@ -96,6 +96,11 @@ inline bool ends_apart(const RoundedVertexBox& a, const RoundedVertexBox& b) {
          proved_less(ty, b.at.y, a.at.y);
 }
 
+// The cell of scaled coordinate f on an axis of n cells: floor(f) clamped to [0, n - 1], NaN
+// (infinity times a zero scale) to cell 0. Monotone in f, so closed ranges that meet have
+// cell ranges that meet.
+inline int clamped_cell(double f, int n) { return !(f >= 1) ? 0 : (f >= n - 1 ? n - 1 : static_cast<int>(f)); }
+
 // A uniform grid over the rounded points. Cell indices are monotone functions of the
 // coordinates (a subtraction and a product, each rounding monotonically), so two closed
 // ranges that meet have cell ranges that meet.
@@ -126,14 +131,12 @@ class BoxGrid {
     ix_ = nx_ > 1 ? nx_ / w : 0;
     iy_ = ny_ > 1 ? ny_ / h : 0;
   }
-  int col(double x) const { return index((x - x0_) * ix_, nx_); }
-  int row(double y) const { return index((y - y0_) * iy_, ny_); }
+  int col(double x) const { return clamped_cell((x - x0_) * ix_, nx_); }
+  int row(double y) const { return clamped_cell((y - y0_) * iy_, ny_); }
   int cells() const { return nx_ * ny_; }
   int cell(int c, int r) const { return r * nx_ + c; }
 
  private:
-  // NaN (infinity times a zero scale) goes to cell 0, the only one on that axis then.
-  static int index(double f, int n) { return !(f >= 1) ? 0 : (f >= n - 1 ? n - 1 : static_cast<int>(f)); }
   double x0_ = HUGE_VAL, y0_ = HUGE_VAL;
   double ix_ = 0, iy_ = 0;
   int nx_ = 1, ny_ = 1;

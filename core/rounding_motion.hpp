@@ -209,8 +209,8 @@ bool rounding_keeps_topology(const BooleanResult<K>& r, const std::vector<std::v
   // `all` cover most of it).
   constexpr int kSide = 64;
   const double sx = ax1 > ax0 ? kSide / (ax1 - ax0) : 0, sy = ay1 > ay0 ? kSide / (ay1 - ay0) : 0;
-  const auto col = [&](double x) { const double f = (x - ax0) * sx; return !(f >= 1) ? 0 : (f >= kSide - 1 ? kSide - 1 : static_cast<int>(f)); };
-  const auto row = [&](double y) { const double f = (y - ay0) * sy; return !(f >= 1) ? 0 : (f >= kSide - 1 ? kSide - 1 : static_cast<int>(f)); };
+  const auto col = [&](double x) { return detail::clamped_cell((x - ax0) * sx, kSide); };
+  const auto row = [&](double y) { return detail::clamped_cell((y - ay0) * sy, kSide); };
   std::vector<std::uint64_t> marked(kSide, 0);  // per row, a bit per column
   const auto mark = [&](const Box& b) {
     const int c0 = col(detail::next_down(b.x0)), c1 = col(detail::next_up(b.x1));
