@@ -82,7 +82,8 @@ struct BooleanOutput {
 
 // Throws std::invalid_argument for an unknown kernel name. With options.fill_rule, the rings
 // of A and B are read by the rule in their given directions (FillRule::union_ reads them as
-// nonzero: see fill_rule_polygon) and options.regular must be true.
+// nonzero: see fill_rule_polygon); options.regular false gives the closed-set operation of
+// the two regions' closures (their two- and one-sided parts where they only touch).
 BooleanOutput compute(const Polygon& a, const Polygon& b, const BooleanOptions& options);
 
 // The rings of an OGC multipolygon as a fill rule reads them: as given, or, for
@@ -92,8 +93,9 @@ BooleanOutput compute(const Polygon& a, const Polygon& b, const BooleanOptions& 
 Polygon fill_rule_polygon(const MultiPolygon& mp, FillRule rule);
 
 // N-ary operations on the parts of a multipolygon (a MULTIPOLYGON, a GeoJSON FeatureCollection,
-// a file of one polygon per line), as one arrangement of all rings. Regular output only;
-// options.op and options.regular are not read.
+// a file of one polygon per line), as one arrangement of all rings. options.op is not read;
+// options.regular false gives the closed-set operation (intersection_all then keeps the edges
+// and points where parts only touch).
 // union_all: the closure of the points whose winding number over all rings together (after
 //   fill_rule_polygon) the rule accepts; default rule union_, which gives the union of the
 //   parts. Other rules read all rings at once, as Clipper's union of all paths does.

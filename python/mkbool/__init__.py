@@ -177,7 +177,7 @@ def _grid_text(grid_size):
         raise UsageError("grid_size is outside the range of doubles") from None
 
 
-def _options(fill_rule, grid_size, rounding, regular):
+def _options(fill_rule, grid_size, rounding):
     """(fill rule, grid, rounding) as the extension takes them, checked before any input is
     read (with a fill rule inputs are read differently)."""
     if fill_rule is not None and fill_rule not in FILL_RULES:
@@ -224,7 +224,7 @@ def compute(op, a, b, *, kernel=None, regular=True, a_type=None, b_type=None, fi
     raises the first pair's error (its message starts with "pair i"), ``errors="return"``
     puts the exception in that pair's place.
     """
-    rule, grid, rounding = _options(fill_rule, grid_size, rounding, regular)
+    rule, grid, rounding = _options(fill_rule, grid_size, rounding)
     convert = as_polygon if not rule else (lambda x, role: by_rule(x, role, rule))
     kernel = "" if kernel is None else kernel
     batch_a, batch_b = _is_batch(a), _is_batch(b)
@@ -340,7 +340,7 @@ def make_valid(geom, *, fill_rule="evenodd", kernel=None, grid_size=None, roundi
 
 
 def _parts_operation(name, geoms, fill_rule, kernel, grid_size, rounding, area_exact, exact):
-    rule, grid, rounding = _options(fill_rule, grid_size, rounding, True)
+    rule, grid, rounding = _options(fill_rule, grid_size, rounding)
     elements = not (name == "make_valid" or _is_one_geometry(geoms))
     if not elements:
         parts = [_island_parts(geoms, "geoms" if name != "make_valid" else "geom")]
