@@ -34,13 +34,23 @@ struct Directed {
   Point2 to;
 };
 
+// Twice the signed area of a closed ring (the shoelace sum).
+Q twice_area(const QRing& r) {
+  Q twice = 0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const QPoint& p = r[i];
+    const QPoint& q = r[(i + 1) % r.size()];
+    twice += p.x * q.y - q.x * p.y;
+  }
+  return twice;
+}
+
 }  // namespace
 
 struct WindingArrangement::Impl {
   std::size_t operands = 0;
   std::vector<Directed> segments;
   Arrangement arr;
-  std::vector<Face> faces;                  // bounded faces, in the walk's order
   std::vector<std::vector<int>> windings;   // per bounded face
   std::string inconsistency;
   // Exact data read once: each bounded face's cycles and area, and every halfedge with the
@@ -74,7 +84,9 @@ struct WindingArrangement::Impl {
     return d;
   }
 
-  void walk() {
+  // Windings of every face reached from the unbounded face; returns the bounded faces, in
+  // the walk's order (that of `windings`).
+  std::vector<Face> walk() {
     std::unordered_map<const void*, std::size_t> index;  // face -> slot in `all`
     std::vector<std::vector<int>> all{std::vector<int>(operands, 0)};
     std::vector<Face> all_faces{arr.unbounded_face()};
@@ -110,10 +122,9 @@ struct WindingArrangement::Impl {
       inconsistency = "the walk reached " + std::to_string(all.size()) + " of " + std::to_string(arr.number_of_faces()) +
                       " faces";
     }
-    for (std::size_t i = 1; i < all.size(); ++i) {
-      faces.push_back(all_faces[i]);
-      windings.push_back(std::move(all[i]));
-    }
+    for (std::size_t i = 1; i < all.size(); ++i) windings.push_back(std::move(all[i]));
+    all_faces.erase(all_faces.begin());
+    return all_faces;
   }
 
   // Every boundary cycle of a face, as the sources of its halfedges in order.
@@ -148,21 +159,15 @@ WindingArrangement::WindingArrangement(const std::vector<std::vector<QRing>>& op
     }
   }
   CGAL::insert(m.arr, curves.begin(), curves.end());
-  m.walk();
+  const std::vector<Face> faces = m.walk();
   std::unordered_map<const void*, long> slot;
-  for (std::size_t f = 0; f < m.faces.size(); ++f) {
-    slot[&*m.faces[f]] = long(f);
-    m.face_cycles.push_back(m.cycles(m.faces[f]));
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    slot[&*faces[f]] = long(f);
+    m.face_cycles.push_back(m.cycles(faces[f]));
     // Outer cycles run counterclockwise and inner ones clockwise (the face on their left),
     // so the signed sum over all of a face's cycles is its area; antennas cancel.
     Q twice = 0;
-    for (const QRing& r : m.face_cycles.back()) {
-      for (std::size_t i = 0; i < r.size(); ++i) {
-        const QPoint& p = r[i];
-        const QPoint& q = r[(i + 1) % r.size()];
-        twice += p.x * q.y - q.x * p.y;
-      }
-    }
+    for (const QRing& r : m.face_cycles.back()) twice += twice_area(r);
     m.face_areas.push_back(twice / 2);
   }
   const auto index = [&](Face f) {
@@ -177,12 +182,12 @@ WindingArrangement::WindingArrangement(const std::vector<std::vector<QRing>>& op
 
 WindingArrangement::~WindingArrangement() = default;
 
-std::size_t WindingArrangement::face_count() const { return impl_->faces.size(); }
+std::size_t WindingArrangement::face_count() const { return impl_->windings.size(); }
 const std::vector<int>& WindingArrangement::windings(std::size_t face) const { return impl_->windings[face]; }
 const std::string& WindingArrangement::inconsistency() const { return impl_->inconsistency; }
 
 WindingArrangement::Selection WindingArrangement::select(const std::function<bool(const std::vector<int>&)>& in) const {
-  Selection s(impl_->faces.size());
+  Selection s(impl_->windings.size());
   for (std::size_t f = 0; f < s.size(); ++f) s[f] = in(impl_->windings[f]);
   return s;
 }
@@ -251,14 +256,6 @@ std::string chain_difference(const std::vector<std::pair<QPoint, QPoint>>& x, co
   return {};
 }
 
-int orientation_sign(const QRing& r) {
-  Q twice = 0;
-  for (std::size_t i = 0; i < r.size(); ++i) {
-    const QPoint& p = r[i];
-    const QPoint& q = r[(i + 1) % r.size()];
-    twice += p.x * q.y - q.x * p.y;
-  }
-  return sgn(twice);
-}
+int orientation_sign(const QRing& r) { return sgn(twice_area(r)); }
 
 }  // namespace mk::oracle

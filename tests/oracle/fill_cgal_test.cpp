@@ -112,7 +112,7 @@ MultiPolygon self_crossing_input(const std::string& family, Rng& rng) {
   } else if (family == "pentagram") {
     part(pentagram(rng));
     if (chance(rng, 3)) part(rectangle(rng, 8));
-  } else if (family == "traced_twice") {  // winding 2, or 0 with a part reversed
+  } else if (family == "traced_twice") {  // winding 2, or 3 or 1 with the ring again either way
     Ring r = chance(rng, 2) ? rectangle(rng, 8) : random_ring(rng, 8, 4);
     Ring twice = r;
     twice.insert(twice.end(), r.begin(), r.end());
