@@ -148,6 +148,8 @@ void run_parts_command(const PartsCommandOptions& o) {
   options.exact_coordinates = o.format == OutputFormat::native_json;
   options.fill_rule = o.fill_rule;
   options.regular = o.regular;
+  options.rounding = o.rounding;
+  options.grid = o.grid;
   PredicateCounters::reset();
   BooleanOutput result;
   const char* what = "union-all";

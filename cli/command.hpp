@@ -50,6 +50,8 @@ struct PartsCommandOptions {
   OutputFormat format = OutputFormat::wkt;
   std::string output;
   bool stats = false;
+  RoundingMode rounding = RoundingMode::certified;  // see mk::BooleanOptions
+  std::string grid;
 };
 
 void run_parts_command(const PartsCommandOptions& options);

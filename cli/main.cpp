@@ -26,6 +26,7 @@ constexpr const char* usage_lines =
     "                     [--fill-rule evenodd|nonzero|positive|negative|union]\n"
     "                     [--rounding certified|nearest] [--grid G]\n"
     "       mkbool union-all|intersection-all|make-valid INPUT [--fill-rule R] [--non-regular] [--kernel K]\n"
+    "                     [--rounding certified|nearest] [--grid G]\n"
     "                     [--format wkt|geojson|json|svg] [-o FILE] [--stats]\n"
     "       mkbool batch FILE.jsonl [--kernel K] [--non-regular] [-o FILE]\n"
     "       mkbool --help | --version\n";
@@ -159,6 +160,9 @@ int run_parts_form(int argc, char** argv) {
       ->check(CLI::IsMember(output_formats()));
   app.add_option("-o,--output", o.output, "output file (written whole or not at all); default standard output");
   app.add_flag("--stats", o.stats, "print one JSON line of statistics on standard error");
+  std::string rounding = "certified";
+  app.add_option("--rounding", rounding, rounding_help)->check(CLI::IsMember(rounding_modes()));
+  app.add_option("--grid", o.grid, grid_help)->check(grid_validator());
   try {
     app.parse(argc - 1, argv + 1);
   } catch (const CLI::ParseError& e) {
@@ -167,6 +171,10 @@ int run_parts_form(int argc, char** argv) {
   if (!rule.empty()) o.fill_rule = fill_rules().at(rule);
   o.regular = !non_regular;
   o.format = output_formats().at(format);
+  o.rounding = rounding_modes().at(rounding);
+  if (o.rounding == RoundingMode::nearest && !o.grid.empty()) {
+    return fail(ExitCode::usage, "--grid snaps the result, which --rounding nearest does not (see mkbool " + verb + " --help)");
+  }
   run_parts_command(o);
   return static_cast<int>(ExitCode::success);
 }

@@ -82,6 +82,29 @@ TEST(cliFill, NonRegularKeepsWhereRegionsOnlyTouch) {
   EXPECT_EQ(regular.out, "POLYGON EMPTY\n") << describe(regular);
 }
 
+// The parts forms round as the binary operations do: --grid snaps the result onto multiples
+// of G. A = the rectangle 0..3 x 0..1, B = the triangle (1 -1, 2.1 2.3, 0.2 2): their
+// edges cross at x = 11/15, 4/3 (y = 0) and 7/15, 5/3 (y = 1), each in the hot pixel of the
+// nearest multiple of 0.5 (0.5, 1.5, 0.5, 1.5); 2.1 2.3 and 0.2 2 go to 2 2.5 and 0 2.
+TEST(cliFill, PartsFormsTakeTheRoundingOptions) {
+  const std::string parts = "MULTIPOLYGON(((0 0,3 0,3 1,0 1,0 0)),((1 -1,2.1 2.3,0.2 2,1 -1)))";
+  const std::string snapped = "POLYGON ((0 0, 0.5 0, 1 -1, 1.5 0, 3 0, 3 1, 1.5 1, 2 2.5, 0 2, 0.5 1, 0 1, 0 0))\n";
+  const ProcessResult u = run_mkbool({"union-all", parts, "--grid", "0.5"});
+  ASSERT_EQ(u.exit_code, 0) << describe(u);
+  EXPECT_EQ(u.out, snapped) << describe(u);
+  const ProcessResult binary =
+      run_mkbool({"union", "POLYGON((0 0,3 0,3 1,0 1,0 0))", "POLYGON((1 -1,2.1 2.3,0.2 2,1 -1))", "--grid", "1/2"});
+  EXPECT_EQ(binary.out, snapped) << describe(binary);
+  const ProcessResult nearest = run_mkbool({"union-all", parts, "--rounding", "nearest"});
+  ASSERT_EQ(nearest.exit_code, 0) << describe(nearest);
+  EXPECT_NE(nearest.out.find("0.7333333333333334 0"), std::string::npos) << describe(nearest);
+  const ProcessResult both = run_mkbool({"make-valid", kBowtie, "--rounding", "nearest", "--grid", "1"});
+  EXPECT_EQ(both.exit_code, 2) << describe(both);
+  EXPECT_NE(both.err.find("--grid snaps the result"), std::string::npos) << describe(both);
+  const ProcessResult bad = run_mkbool({"intersection-all", parts, "--grid", "0"});
+  EXPECT_EQ(bad.exit_code, 2) << describe(bad);
+}
+
 TEST(cliFill, BadArgumentsAndInputGetClearErrors) {
   const ProcessResult rule = run_mkbool({"make-valid", kBowtie, "--fill-rule", "odd"});
   EXPECT_EQ(rule.exit_code, 2) << describe(rule);
