@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "api/mkbool.hpp"
+#include "cli/command.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/inputs.hpp"
 #include "cli/output_file.hpp"
@@ -20,6 +21,7 @@
 #include "io/file.hpp"
 #include "io/native_json.hpp"
 #include "io/parts.hpp"
+#include "io/format.hpp"
 #include "io/wkt.hpp"
 
 namespace mk::cli {
@@ -43,6 +45,13 @@ std::optional<Operation> parse_operation(std::string_view name) {
   if (name == "union") return Operation::union_;
   if (name == "difference") return Operation::difference;
   if (name == "symdifference" || name == "xor") return Operation::symmetric_difference;
+  return std::nullopt;
+}
+
+std::optional<PartsOperation> parse_parts_operation(std::string_view name) {
+  if (name == "union-all") return PartsOperation::union_all;
+  if (name == "intersection-all") return PartsOperation::intersection_all;
+  if (name == "make-valid") return PartsOperation::make_valid;
   return std::nullopt;
 }
 
@@ -98,43 +107,56 @@ bool nests_deeper_than(const InputJson& j, std::size_t limit) {
   return false;
 }
 
-// Fills `out` for one case; throws CaseError when the case fails.
-void run_case(std::string_view text, const BatchOptions& options, Json& out) {
-  InputJson line;
-  try {
-    line = InputJson::parse(text);
-  } catch (const InputJson::parse_error& e) {
-    throw CaseError{"malformed JSON: " + without_exception_id(e.what())};
+// The options of one case: the command's, then the line's own "area_exact", "exact_result",
+// "rounding" and "grid".
+BooleanOptions case_options(const InputJson& line, const BatchOptions& options, std::optional<FillRule> rule) {
+  BooleanOptions o;
+  o.fill_rule = rule;
+  o.regular = options.regular;
+  o.kernel = options.kernel;
+  o.area_exact = options.area_exact;
+  if (const auto it = line.find("area_exact"); it != line.end()) {
+    if (!it->is_boolean()) throw CaseError{"\"area_exact\" is not true or false"};
+    o.area_exact = o.area_exact && it->get<bool>();
   }
-  if (!line.is_object()) throw CaseError{"a line must be a JSON object"};
-  if (const auto id = line.find("id"); id != line.end()) {
-    if (nests_deeper_than(*id, max_id_depth)) {
-      throw CaseError{"\"id\" nests deeper than " + std::to_string(max_id_depth) + " levels"};
+  o.exact_coordinates = options.exact_result;
+  if (const auto it = line.find("exact_result"); it != line.end()) {
+    if (!it->is_boolean()) throw CaseError{"\"exact_result\" is not true or false"};
+    o.exact_coordinates = it->get<bool>();
+  }
+  o.rounding = options.rounding;
+  o.grid = options.grid;
+  if (const auto it = line.find("rounding"); it != line.end()) {
+    if (*it == "certified") {
+      o.rounding = RoundingMode::certified;
+    } else if (*it == "nearest") {
+      o.rounding = RoundingMode::nearest;
+    } else {
+      throw CaseError{"\"rounding\" is not \"certified\" or \"nearest\""};
     }
-    out["id"] = Json(*id);
   }
-  const std::string op_name = member_string(line, "op");
-  out["op"] = op_name;
-  const auto op = parse_operation(op_name);
-  if (!op) {
-    throw CaseError{"unknown op '" + op_name + "' (expected intersection, union, difference, symdifference or xor)"};
+  if (const auto it = line.find("grid"); it != line.end()) {
+    if (!it->is_string()) throw CaseError{"\"grid\" is not a string (a decimal like \"0.001\" or a fraction \"p/q\")"};
+    o.grid = it->get<std::string>();
   }
-  // "fill_rule": the inputs are any rings, read by the rule (io/format.hpp, unchecked).
-  std::optional<FillRule> rule;
-  if (line.contains("fill_rule")) {
-    const std::string name = member_string(line, "fill_rule");
-    for (const FillRule r : {FillRule::evenodd, FillRule::nonzero, FillRule::positive, FillRule::negative, FillRule::union_}) {
-      if (name == fill_rule_name(r)) rule = r;
-    }
-    if (!rule) throw CaseError{"unknown fill_rule '" + name + "' (expected evenodd, nonzero, positive, negative or union)"};
-  }
-  // The polygons: "a_wkt" and "b_wkt", or "a" and "b" in the native JSON form, whose
-  // coordinates may be exact rationals (an exact result fed back in).
+  if (o.rounding == RoundingMode::nearest && !o.grid.empty()) throw CaseError{"\"grid\" snaps, which rounding nearest does not"};
+  return o;
+}
+
+// A binary operation: "a_wkt" and "b_wkt", or "a" and "b" in the native JSON form, whose
+// coordinates may be exact rationals (an exact result fed back in).
+BooleanOutput run_binary_case(const InputJson& line, Operation op, BooleanOptions o) {
+  o.op = op;
+  const std::optional<FillRule> rule = o.fill_rule;
   const bool native = line.contains("a") || line.contains("b");
   if (native && (line.contains("a_wkt") || line.contains("b_wkt"))) {
     throw CaseError{"give the polygons as \"a_wkt\" and \"b_wkt\" or as \"a\" and \"b\", not both"};
   }
   if (native && rule) throw CaseError{"\"fill_rule\" reads \"a_wkt\" and \"b_wkt\" (any rings), not \"a\" and \"b\""};
+  if (!native && !line.contains("a_wkt") && (line.contains("wkt") || line.contains("parts") || line.contains("geojson"))) {
+    throw CaseError{"missing \"a_wkt\" (\"wkt\", \"parts\" and \"geojson\" are the input of union-all, intersection-all "
+                    "and make-valid)"};
+  }
   const auto read = [&](const char* key) {
     if (!rule) return read_case_polygon(member_string(line, key), key);
     try {
@@ -153,58 +175,60 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
       throw CaseError{std::string(key) + ": " + e.what()};
     }
   };
-  std::optional<ExactPolygon> exact_a, exact_b;
-  Polygon a, b;
   if (native) {
-    exact_a = read_native("a");
-    exact_b = read_native("b");
-  } else {
-    a = read("a_wkt");
-    b = read("b_wkt");
+    const ExactPolygon a = read_native("a"), b = read_native("b");
+    return compute(a, b, o);
   }
-  bool want_result = options.exact_result;
-  if (const auto it = line.find("exact_result"); it != line.end()) {
-    if (!it->is_boolean()) throw CaseError{"\"exact_result\" is not true or false"};
-    want_result = it->get<bool>();
-  }
+  const Polygon a = read("a_wkt"), b = read("b_wkt");
+  return compute(a, b, o);
+}
 
-  BooleanOptions o;
-  o.fill_rule = rule;
-  o.op = *op;
-  o.regular = options.regular;
-  o.kernel = options.kernel;
-  o.area_exact = options.area_exact;
-  if (const auto it = line.find("area_exact"); it != line.end()) {
-    if (!it->is_boolean()) throw CaseError{"\"area_exact\" is not true or false"};
-    o.area_exact = o.area_exact && it->get<bool>();
+// union-all, intersection-all or make-valid of the parts of one input, given as exactly one
+// of "wkt" (a WKT geometry, its polygons the parts), "parts" (an array of WKT geometries)
+// or "geojson" (a GeoJSON object: a FeatureCollection, a geometry, a Feature).
+BooleanOutput run_parts_case(const InputJson& line, PartsOperation op, const BooleanOptions& o) {
+  const int given = int(line.contains("wkt")) + int(line.contains("parts")) + int(line.contains("geojson"));
+  if (given == 0) {
+    throw CaseError{"missing the input: \"wkt\", \"parts\" (an array of WKT) or \"geojson\" (\"a_wkt\" and \"b_wkt\" are "
+                    "a binary operation's)"};
   }
-  o.rounding = options.rounding;
-  o.grid = options.grid;
-  if (const auto it = line.find("rounding"); it != line.end()) {
-    if (*it == "certified") {
-      o.rounding = RoundingMode::certified;
-    } else if (*it == "nearest") {
-      o.rounding = RoundingMode::nearest;
-    } else {
-      throw CaseError{"\"rounding\" is not \"certified\" or \"nearest\""};
-    }
-  }
-  if (const auto it = line.find("grid"); it != line.end()) {
-    if (!it->is_string()) throw CaseError{"\"grid\" is not a string (a decimal like \"0.001\" or a fraction \"p/q\")"};
-    o.grid = it->get<std::string>();
-  }
-  if (o.rounding == RoundingMode::nearest && !o.grid.empty()) throw CaseError{"\"grid\" snaps, which rounding nearest does not"};
-  o.exact_coordinates = want_result;
-  BooleanOutput r;
+  if (given > 1) throw CaseError{"give the input as one of \"wkt\", \"parts\" and \"geojson\", not several"};
+  MultiPolygon parts;
+  const char* key = line.contains("wkt") ? "wkt" : line.contains("parts") ? "parts" : "geojson";
   try {
-    r = native ? compute(*exact_a, *exact_b, o) : compute(a, b, o);
-  } catch (const std::invalid_argument& e) {  // a kernel that takes doubles only, given rationals
-    throw CaseError{e.what()};
+    if (line.contains("wkt")) {
+      parts = read_parts_input(member_string(line, "wkt"), "input.wkt");
+    } else if (line.contains("geojson")) {
+      const InputJson& g = line["geojson"];
+      if (!g.is_object()) throw CaseError{"\"geojson\" is not a GeoJSON object"};
+      parts = read_parts_input(g.dump(), "input.geojson");
+    } else {
+      const InputJson& list = line["parts"];
+      if (!list.is_array()) throw CaseError{"\"parts\" is not an array of WKT strings"};
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        if (!list[i].is_string()) throw CaseError{"\"parts\"[" + std::to_string(i) + "] is not a WKT string"};
+        try {
+          for (OgcPolygon& p : read_wkt(list[i].get<std::string>())) parts.push_back(std::move(p));
+        } catch (const InvalidInput& e) {
+          throw InvalidInput("[" + std::to_string(i) + "]: " + e.what());
+        }
+      }
+    }
   } catch (const InvalidInput& e) {
-    throw CaseError{e.what()};
-  } catch (const KernelFailure& e) {
-    throw CaseError{"kernel " + out["kernel"].get<std::string>() + " failed: " + e.what()};
+    throw CaseError{std::string(key) + (key[0] == 'p' ? "" : ": ") + e.what()};
   }
+  switch (op) {
+    case PartsOperation::union_all: return union_all(parts, o);
+    case PartsOperation::intersection_all:
+      if (parts.empty()) throw CaseError{std::string(key) + ": intersection-all needs at least one polygon"};
+      return intersection_all(parts, o);
+    case PartsOperation::make_valid: return make_valid(parts, o);
+  }
+  throw CaseError{"unknown operation"};
+}
+
+// The output line's results.
+void write_case_result(const BooleanOutput& r, bool want_result, Json& out) {
   out["kernel"] = r.stats.kernel;
   out["valid"] = is_output_valid(r.output);
   out["snapped"] = r.output.rounding.snapped;
@@ -225,6 +249,51 @@ void run_case(std::string_view text, const BatchOptions& options, Json& out) {
   out["result_wkt"] = write_wkt(r.output);
 }
 
+// Fills `out` for one case; throws CaseError when the case fails.
+void run_case(std::string_view text, const BatchOptions& options, Json& out) {
+  InputJson line;
+  try {
+    line = InputJson::parse(text);
+  } catch (const InputJson::parse_error& e) {
+    throw CaseError{"malformed JSON: " + without_exception_id(e.what())};
+  }
+  if (!line.is_object()) throw CaseError{"a line must be a JSON object"};
+  if (const auto id = line.find("id"); id != line.end()) {
+    if (nests_deeper_than(*id, max_id_depth)) {
+      throw CaseError{"\"id\" nests deeper than " + std::to_string(max_id_depth) + " levels"};
+    }
+    out["id"] = Json(*id);
+  }
+  const std::string op_name = member_string(line, "op");
+  out["op"] = op_name;
+  const auto op = parse_operation(op_name);
+  const auto parts_op = parse_parts_operation(op_name);
+  if (!op && !parts_op) {
+    throw CaseError{"unknown op '" + op_name +
+                    "' (expected intersection, union, difference, symdifference, xor, union-all, intersection-all or make-valid)"};
+  }
+  // "fill_rule": the inputs are any rings, read by the rule (io/format.hpp, unchecked).
+  std::optional<FillRule> rule;
+  if (line.contains("fill_rule")) {
+    const std::string name = member_string(line, "fill_rule");
+    for (const FillRule r : {FillRule::evenodd, FillRule::nonzero, FillRule::positive, FillRule::negative, FillRule::union_}) {
+      if (name == fill_rule_name(r)) rule = r;
+    }
+    if (!rule) throw CaseError{"unknown fill_rule '" + name + "' (expected evenodd, nonzero, positive, negative or union)"};
+  }
+  const BooleanOptions o = case_options(line, options, rule);
+  BooleanOutput r;
+  try {
+    r = parts_op ? run_parts_case(line, *parts_op, o) : run_binary_case(line, *op, o);
+  } catch (const std::invalid_argument& e) {  // a kernel that takes doubles only, given rationals
+    throw CaseError{e.what()};
+  } catch (const InvalidInput& e) {
+    throw CaseError{e.what()};
+  } catch (const KernelFailure& e) {
+    throw CaseError{"kernel " + out["kernel"].get<std::string>() + " failed: " + e.what()};
+  }
+  write_case_result(r, o.exact_coordinates, out);
+}
 std::string_view strip_line_end(std::string_view s) {
   if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
   return s;

@@ -182,7 +182,8 @@ int run_parts_form(int argc, char** argv) {
 int run_batch_form(int argc, char** argv) {
   CLI::App app("Runs one Boolean operation per JSON line. Each input line is an object with \"id\",\n"
                "\"op\" (intersection, union, difference, symdifference or xor), \"a_wkt\" and \"b_wkt\"\n"
-               "(or \"a\" and \"b\": native JSON polygons, exact rationals allowed); each output line\n"
+               "(or \"a\" and \"b\": native JSON polygons, exact rationals allowed), or \"op\" union-all,\n"
+               "intersection-all or make-valid with \"wkt\", \"parts\" (an array of WKT) or \"geojson\"; each output line\n"
                "has id, op, kernel, result_wkt, area, area_beyond_double, area_exact, valid, op_ns,\n"
                "snapped, line, result (with --exact-result), and error when that case failed. A failed\n"
                "case never stops the batch.\n",

@@ -3,8 +3,11 @@
 // [BRIEF §1, extended by issue 13] (fill rules) [OGC06-103 §7]
 // Preconditions: the built mkbool (MK_CLI_EXE).
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "tests/cli/cli_support.hpp"
 
@@ -103,6 +106,49 @@ TEST(cliFill, PartsFormsTakeTheRoundingOptions) {
   EXPECT_NE(both.err.find("--grid snaps the result"), std::string::npos) << describe(both);
   const ProcessResult bad = run_mkbool({"intersection-all", parts, "--grid", "0"});
   EXPECT_EQ(bad.exit_code, 2) << describe(bad);
+}
+
+// Batch lines run the parts forms too: "op" union-all, intersection-all or make-valid with
+// the input as "wkt", "parts" (an array of WKT) or "geojson". Areas derived by hand: two
+// 2 x 2 squares overlapping in a unit square (union 7, intersection 1), the bowtie's two
+// triangles (2 under nonzero), a 2 x 2 square (4); bad lines get their own errors.
+TEST(cliFill, BatchLinesRunThePartsForms) {
+  using Json = nlohmann::json;
+  const std::string squares = "MULTIPOLYGON(((0 0,2 0,2 2,0 2,0 0)),((1 1,3 1,3 3,1 3,1 1)))";
+  const Json square = Json::parse(R"({"type":"Polygon","coordinates":[[[0,0],[2,0],[2,2],[0,2],[0,0]]]})");
+  const std::vector<Json> lines{
+      {{"id", 1}, {"op", "union-all"}, {"wkt", squares}},
+      {{"id", 2}, {"op", "intersection-all"}, {"parts", {"POLYGON((0 0,2 0,2 2,0 2,0 0))", "POLYGON((1 1,3 1,3 3,1 3,1 1))"}}},
+      {{"id", 3}, {"op", "make-valid"}, {"wkt", kBowtie}, {"fill_rule", "nonzero"}},
+      {{"id", 4}, {"op", "union-all"}, {"geojson", {{"type", "FeatureCollection"}, {"features", {{{"type", "Feature"}, {"properties", Json::object()}, {"geometry", square}}}}}}},
+      {{"id", 5}, {"op", "union-all"}, {"a_wkt", kSquare}, {"b_wkt", kSquare}},
+      {{"id", 6}, {"op", "union-all"}, {"parts", {kSquare, 3}}},
+      {{"id", 7}, {"op", "intersection-all"}, {"parts", Json::array()}},
+      {{"id", 8}, {"op", "union-all"}, {"wkt", kSquare}, {"geojson", square}},
+      {{"id", 9}, {"op", "union"}, {"wkt", squares}},
+      {{"id", 10}, {"op", "union-all"}, {"wkt", "POLYGON((0 0,1 0,1 1))"}}};
+  std::string input;
+  for (const Json& l : lines) input += l.dump() + "\n";
+  const ProcessResult r = run_mkbool({"batch", "-"}, input);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  std::vector<Json> out;
+  std::istringstream text(r.out);
+  for (std::string line; std::getline(text, line);) out.push_back(Json::parse(line));
+  ASSERT_EQ(out.size(), lines.size()) << r.out;
+  const char* areas[] = {"7", "1", "2", "4"};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(out[i]["area_exact"], areas[i]) << out[i].dump();
+    EXPECT_EQ(out[i]["valid"], true) << out[i].dump();
+    EXPECT_FALSE(out[i].contains("error")) << out[i].dump();
+  }
+  EXPECT_EQ(out[0]["result_wkt"], "POLYGON ((0 2, 0 0, 2 0, 2 1, 3 1, 3 3, 1 3, 1 2, 0 2))");
+  const char* errors[] = {"missing the input", "\"parts\"[1] is not a WKT string", "needs at least one polygon",
+                          "not several", "missing \"a_wkt\"", "ring has 3 coordinates"};
+  for (int i = 4; i < 10; ++i) {
+    ASSERT_TRUE(out[i].contains("error")) << out[i].dump();
+    EXPECT_NE(out[i]["error"].get<std::string>().find(errors[i - 4]), std::string::npos) << out[i].dump();
+    EXPECT_TRUE(out[i]["result_wkt"].is_null()) << out[i].dump();
+  }
 }
 
 TEST(cliFill, BadArgumentsAndInputGetClearErrors) {
