@@ -156,7 +156,7 @@ struct LevelSizes {
 LevelSizes sizes_of(SweepLevel level) {
   switch (level) {
     case SweepLevel::quick: return {3, 32, {16, 64, 256, 1024}, {16, 64, 256}, 1, 2, {8, 64}};
-    case SweepLevel::normal: return {40, 8, {16, 64, 256, 1024, 4096, 16384}, {16, 64, 256, 512, 1024}, 2, 6, {8, 32, 128}};
+    case SweepLevel::normal: return {40, 8, {16, 64, 256, 1024, 4096, 16384}, {16, 64, 256, 512, 1024}, 2, 6, {8, 32, 64}};
     case SweepLevel::full: return {200, 2, {16, 64, 256, 1024, 4096, 16384, 65536}, {16, 64, 256, 1024, 2048, 4096}, 4, 40, {8, 32, 128, 300}};
   }
   return {};

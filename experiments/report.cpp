@@ -122,8 +122,9 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
   }
 
   md << "# mkbool robustness experiments\n\n";
-  md << "Every run computes one Boolean operation of two generated polygons with one kernel and compares "
-        "the result with the exact result of `RationalKernel`. Verdicts and the CSV columns are defined in "
+  md << "Every run computes one Boolean operation of two generated polygons (or, for the set generators, the "
+        "union or intersection of all polygons of a set) with one kernel and compares the result with the exact "
+        "result of `RationalKernel`. Verdicts and the CSV columns are defined in "
         "`experiments/README.md` of the repository. " << cases.size() << " cases, " << rows.size() << " runs.\n\n";
   if (!sweep_lines.empty()) {
     md << "## Sweep\n\n";

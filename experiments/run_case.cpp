@@ -1,5 +1,6 @@
 // The runs of one case: the exact reference per (op, regular), then every kernel through
-// the public API (operations.hpp: pair or set case), each assessed against the reference. [MK89 §3.2] [MK89 §3.3]
+// the public API (operations.hpp: a pair or a set case), each assessed against the
+// reference. [MK89 §3.2] [MK89 §3.3]
 // Preconditions: see runner.hpp.
 #include <algorithm>
 #include <array>
