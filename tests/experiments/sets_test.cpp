@@ -1,18 +1,21 @@
-// Tests of set cases (union_all, intersection_all through the harness) and of the fill-rule
-// and set regression case files: hand-derived results, the coverage identity, a perturbed
-// result judged wrong, a sweep of the set generators with every exact kernel exact, and
-// regression files that replay their case. [BRIEF §1, extended by issue 13]
+// Tests of set cases (union_all, intersection_all through the harness), of fill-rule cases
+// in the sweep (every rule, regular and not) and of the fill-rule and set regression case
+// files: hand-derived results, the coverage identity, a perturbed result judged wrong,
+// sweeps of the fill and set generators with every exact kernel exact, and regression files
+// that replay their case. [BRIEF §1, extended by issue 13]
 // Preconditions: none.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <set>
 
 #include "api/mkbool.hpp"
 #include "experiments/artefacts.hpp"
 #include "experiments/generators.hpp"
 #include "experiments/operations.hpp"
+#include "experiments/peers/peers.hpp"
 #include "experiments/runner.hpp"
 #include "experiments/verdict.hpp"
 
@@ -95,6 +98,48 @@ TEST(Sets, APerturbedResultIsNotExact) {
   cycle.exact[0] = x.get_str();
   const Assessment a = assess(out, ref);
   EXPECT_NE(a.verdict, Verdict::exact_match) << a.note;
+}
+
+std::vector<std::string> fill_generator_names() {
+  std::vector<std::string> out;
+  for (const Generator& g : generators()) {
+    if (is_fill_generator(g.name)) out.emplace_back(g.name);
+  }
+  return out;
+}
+
+// Fill-rule cases: each named fill generator plans every rule (param rule = 0-4) and variant,
+// runs every operation regular and non-regular, every exact kernel equals the rule's exact
+// reference, and the peers are left out (they do not read fill rules).
+TEST(Sweep, FillGeneratorsRunEveryRuleRegularAndNot) {
+  const std::vector<std::string> names = fill_generator_names();
+  ASSERT_FALSE(names.empty());
+  const auto plan = plan_sweep({SweepLevel::quick, 1, 11, names});
+  ASSERT_EQ(plan.size(), names.size() * 2 * 5);
+  std::set<std::int64_t> rules;
+  for (const auto& c : plan) rules.insert(c.param("rule", -1));
+  EXPECT_EQ(rules, (std::set<std::int64_t>{0, 1, 2, 3, 4}));
+  RunOptions o;
+  // Not the number-type variants of rational (its results, several times its cost).
+  for (const auto k : kernel_names()) {
+    if (!is_number_type_variant(k)) o.kernels.emplace_back(k);
+  }
+  const std::size_t kernels = o.kernels.size();
+  for (const auto p : peer_names()) o.kernels.emplace_back(p);
+  o.isolate = false;
+  const auto rows = run_sweep(select_shard(plan, {}), o, "");
+  EXPECT_EQ(rows.size(), plan.size() * 8 * kernels);  // 4 operations x regular or not, no peer
+  std::size_t non_regular = 0;
+  for (const auto& r : rows) {
+    non_regular += r.regular ? 0 : 1;
+    EXPECT_FALSE(is_peer(r.kernel)) << to_csv(r);
+  }
+  EXPECT_EQ(non_regular, rows.size() / 2);
+  for (const auto& r : rows) {
+    if (is_exact_kernel(r.kernel)) {
+      EXPECT_EQ(r.verdict, Verdict::exact_match) << to_csv(r);
+    }
+  }
 }
 
 // The set generators through the sweep: union_all and intersection_all, regular or not, no
