@@ -21,6 +21,7 @@
 #include "api/mkbool.hpp"
 #include "core/error.hpp"
 #include "experiments/generators.hpp"
+#include "experiments/operations.hpp"
 #include "experiments/peer_verdict.hpp"
 #include "experiments/snapping_pictures.hpp"
 #include "experiments/verdict.hpp"
@@ -54,13 +55,6 @@ std::optional<Artefact::Kind> parse_artefact_kind(std::string_view name) {
 }
 
 namespace {
-
-// The options a kernel's run of the case used (fill-rule cases read their rings by the rule).
-BooleanOptions options_of(Operation op, bool regular, const std::string& kernel, const CaseSpec& spec) {
-  BooleanOptions o{op, regular, kernel};
-  o.fill_rule = fill_rule_of(spec);
-  return o;
-}
 
 // Runs f in a forked child, killing it after `timeout` seconds. True when it finished.
 bool run_isolated(const std::function<void()>& f, double timeout) {
@@ -179,9 +173,9 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
     const bool ok = run_isolated(
         [&] {
           const Case c = make_case(spec);
-          const Operation op = parse_operation(r->op);
+          const Operation op = parse_run_operation(r->op);
           if (kind == Artefact::Kind::regression_case) {
-            write_file(target, regression_case_text(c.a, c.b, op, r->regular,
+            write_file(target, regression_case_text(c, op, r->regular,
                                                     {"generator=" + r->generator + " variant=" + r->variant +
                                                          " params=" + r->params + " seed=" + std::to_string(r->seed),
                                                      "kernel=" + r->kernel + " verdict=" +
@@ -190,10 +184,10 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
             return;
           }
           if (kind == Artefact::Kind::snapping) {
-            write_file(target, snapping_picture(c.a, c.b, op, r->regular, r->kernel));
+            write_file(target, snapping_picture(c, op, r->regular, r->kernel));
             return;
           }
-          const ExactResult ref = exact_reference(c.a, c.b, op, r->regular, false, fill_rule_of(spec));
+          const ExactResult ref = case_reference(c, op, r->regular, false);
           std::optional<Output> kernel_out;
           std::string title = r->kernel + ": " + std::string(verdict_name(r->verdict));
           if (r->area_error) {
@@ -205,7 +199,7 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
           if (rerun) {
             try {
               kernel_out = is_peer(r->kernel) ? peer_as_output(run_peer_on_case(r->kernel, c, op))
-                                              : compute(c.a, c.b, options_of(op, r->regular, r->kernel, spec)).output;
+                                              : run_operation(c, BooleanOptions{op, r->regular, r->kernel}).output;
             } catch (const std::exception& e) {
               title += " (" + std::string(e.what()).substr(0, 80) + ")";
             }
@@ -225,7 +219,7 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
     const bool ok = run_isolated(
         [&] {
           const Case c = make_case(spec_of(*r));
-          const Operation op = parse_operation(r->op);
+          const Operation op = parse_run_operation(r->op);
           const auto area_polygon = [](const Output& o) {
             Polygon p;
             for (const auto& cyc : o.irreducible) {
@@ -233,8 +227,8 @@ std::vector<Artefact> write_artefacts(const std::vector<ResultRow>& rows, const 
             }
             return p;
           };
-          const Polygon k = area_polygon(compute(c.a, c.b, options_of(op, r->regular, r->kernel, c.spec)).output);
-          const Polygon e = area_polygon(exact_reference(c.a, c.b, op, r->regular, false, fill_rule_of(c.spec)).output);
+          const Polygon k = area_polygon(run_operation(c, BooleanOptions{op, r->regular, r->kernel}).output);
+          const Polygon e = area_polygon(case_reference(c, op, r->regular, false).output);
           for (const auto& [x, y] : {std::pair{&k, &k}, std::pair{&e, &e}, std::pair{&k, &e}}) {
             if (const auto what = violated_identity(*x, *y)) {
               const Operation show = x == y ? Operation::intersection : Operation::symmetric_difference;

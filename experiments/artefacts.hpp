@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "api/mkbool.hpp"
+#include "core/fill_rule.hpp"
 #include "core/output.hpp"
 #include "core/polygon.hpp"
 #include "experiments/case.hpp"
@@ -21,23 +23,36 @@
 
 namespace mk::experiments {
 
-// The regression case format, four lines and optional '#' comment lines:
+// The regression case format, four lines, an optional fifth and '#' comment lines:
 //   A as WKT (POLYGON / MULTIPOLYGON) when it is island-type with rings of 3+ points in
-//     shell-then-holes order, else as native JSON on one line
+//     shell-then-holes order and no fill rule, else as native JSON on one line (rings in
+//     their given directions, as a fill rule reads them)
 //   B the same way
 //   the operation: intersection | union | difference | xor
 //   regular | nonregular
+//   fill_rule evenodd | nonzero | positive | negative | union   (only when the case has one)
+// A set case (Case::parts) writes line 1 as the parts, a MULTIPOLYGON with every ring as
+// given (direction, start), line 2 as MULTIPOLYGON EMPTY, and line 3 union_all or
+// intersection_all.
 std::string regression_case_text(const Polygon& a, const Polygon& b, Operation op, bool regular,
-                                 const std::vector<std::string>& comments);
+                                 const std::vector<std::string>& comments,
+                                 std::optional<FillRule> fill_rule = std::nullopt);
+std::string regression_case_text(const Case& c, Operation op, bool regular, const std::vector<std::string>& comments);
 
 struct RegressionCase {
   Polygon a;
   Polygon b;
   Operation op = Operation::intersection;
   bool regular = true;
+  std::optional<FillRule> fill_rule;
+  std::optional<MultiPolygon> parts;  // a set case: op is union (union_all) or intersection
 };
 // Reads the format above (WKT or native JSON per line); throws mk::InvalidInput.
 RegressionCase read_regression_case(const std::string& text);
+
+// The case's run with options.kernel and options.regular (options.op, fill_rule and the
+// operands from the case): compute, union_all or intersection_all.
+BooleanOutput replay_regression_case(const RegressionCase& c, BooleanOptions options);
 
 
 struct Artefact {

@@ -1,5 +1,6 @@
 // A generated experiment case: the spec that reproduces it (generator, variant, integer
-// parameters, seed) and the two input polygons A and B. [MK89 §2.2] (polygon model)
+// parameters, seed) and the two input polygons A and B, or for a set case the parts of an
+// N-ary operation. [MK89 §2.2] (polygon model)
 // Preconditions: none; a spec is plain data, written to and read from CSV rows.
 #pragma once
 
@@ -43,6 +44,11 @@ struct Case {
   // the peer libraries take; generated cases get theirs from the rings' nesting (ogc.hpp).
   std::optional<MultiPolygon> a_ogc;
   std::optional<MultiPolygon> b_ogc;
+  // Set cases (generators_set.cpp): the parts of union_all and intersection_all, as given
+  // (overlapping, sharing edges). A then holds all their rings as the case's fill rule reads
+  // them (mk::fill_rule_polygon), for sizes and pictures, and B is empty: the pair shape of
+  // every other case, so that rows, pictures and reports need no second kind of case.
+  std::optional<MultiPolygon> parts = std::nullopt;
   std::size_t size() const;  // input vertices of A and B together
 };
 

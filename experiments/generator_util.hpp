@@ -4,6 +4,7 @@
 // Preconditions: rings are lattice rings small enough for lattice.hpp.
 #pragma once
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -63,6 +64,42 @@ inline IRing hole_inside(std::mt19937_64& rng, const IRing& outer, IPoint centre
     if (is_strictly_inside(outer, h)) return h;
   }
   return {};
+}
+
+// Parts on the lattice for the fill-rule and set generators: a shell and its holes each.
+struct LatticePart {
+  IRing shell;
+  std::vector<IRing> holes;
+};
+using LatticeParts = std::vector<LatticePart>;
+
+// Each ring reversed or not and started anywhere; the map applied; then doubles.
+inline MultiPolygon to_multipolygon(std::mt19937_64& rng, const LatticeParts& parts, const LatticeMap& map) {
+  const auto ring = [&](const IRing& r) {
+    IRing m = apply(map, r);
+    if (uniform(rng, 0, 1) == 1) m = reversed(m);
+    return to_ring(shifted_start(m, static_cast<std::size_t>(uniform(rng, 0, static_cast<std::int64_t>(m.size()) - 1))));
+  };
+  MultiPolygon mp;
+  for (const LatticePart& p : parts) {
+    OgcPolygon& o = mp.emplace_back();
+    o.shell = ring(p.shell);
+    for (const IRing& h : p.holes) o.holes.push_back(ring(h));
+  }
+  return mp;
+}
+
+// A rotation by a random angle about the origin, rounded to doubles: shared points stay
+// shared, but crossings leave the lattice and collinear edges mostly stop being collinear.
+inline void rotate(MultiPolygon& mp, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  const auto turn = [&](Ring& r) {
+    for (Point& p : r) p = {c * p.x - s * p.y, s * p.x + c * p.y};
+  };
+  for (OgcPolygon& p : mp) {
+    turn(p.shell);
+    for (Ring& h : p.holes) turn(h);
+  }
 }
 
 }  // namespace mk::experiments::detail

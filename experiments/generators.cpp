@@ -5,8 +5,10 @@
 
 #include <charconv>
 
-#include "experiments/external_cases.hpp"
 #include <stdexcept>
+
+#include "api/mkbool.hpp"
+#include "experiments/external_cases.hpp"
 
 namespace mk::experiments {
 
@@ -106,6 +108,9 @@ const std::vector<Generator>& generators() {
       {"pentagram", "star polygons {5/2} and 7-point stars, centres wound 2-3 times (fill rule: param rule)", {"lattice", "rotated"}, &pentagram},
       {"traced_twice", "a ring traced twice, with the same ring again or reversed (fill rule: param rule)", {"lattice", "rotated"}, &traced_twice},
       {"overlapping_multipart", "overlapping parts with holes sharing edges and vertices (fill rule: param rule)", {"lattice", "rotated"}, &overlapping_multipart},
+      {"random_set", "n random lattice polygons (rectangles, triangles, convex, some with holes, some repeated) overlapping and sharing edges and vertices (set: union_all, intersection_all)", {"lattice", "rotated"}, nullptr, &random_set},
+      {"coverage_grid", "an n x n grid of unit squares sharing every edge, some missing, split or merged (T-junctions) (set)", {"lattice", "rotated"}, nullptr, &coverage_grid},
+      {"nested_parts", "squares with holes holding parts that fill them, touch them or nest again, and parts around whole nests (set)", {"lattice", "rotated"}, nullptr, &nested_parts},
       {"reported", "inputs of public issue reports of polygon Boolean libraries (experiments/reported/*.jsonl; variant = case id)", {}, &reported},
       {"cases", "the user's own pairs (run --cases FILE.jsonl; variant = case id)", {}, &cases},
   };
@@ -126,6 +131,12 @@ bool is_external_generator(std::string_view name) { return name == "reported" ||
 Case make_case(const CaseSpec& spec) {
   if (is_external_generator(spec.generator)) return make_external_case(spec);
   const Generator& g = find_generator(spec.generator);
+  if (g.make_set != nullptr) {
+    Case c{spec, {}, {}, std::nullopt, std::nullopt};
+    c.parts = g.make_set(spec);
+    c.a = fill_rule_polygon(*c.parts, *fill_rule_of(spec));
+    return c;
+  }
   PolygonPair p = g.make(spec);
   return {spec, std::move(p.a), std::move(p.b), std::nullopt, std::nullopt};
 }
@@ -138,13 +149,15 @@ struct LevelSizes {
   std::vector<std::int64_t> blob_n;
   std::vector<std::int64_t> star_n;
   int large_seeds;  // seeds per size for blob and star
+  int set_seeds;    // seeds of the set generators (random_set cycles through set_n)
+  std::vector<std::int64_t> set_n;
 };
 
 LevelSizes sizes_of(SweepLevel level) {
   switch (level) {
-    case SweepLevel::quick: return {3, 32, {16, 64, 256, 1024}, {16, 64, 256}, 1};
-    case SweepLevel::normal: return {40, 8, {16, 64, 256, 1024, 4096, 16384}, {16, 64, 256, 512, 1024}, 2};
-    case SweepLevel::full: return {200, 2, {16, 64, 256, 1024, 4096, 16384, 65536}, {16, 64, 256, 1024, 2048, 4096}, 4};
+    case SweepLevel::quick: return {3, 32, {16, 64, 256, 1024}, {16, 64, 256}, 1, 2, {8, 64}};
+    case SweepLevel::normal: return {40, 8, {16, 64, 256, 1024, 4096, 16384}, {16, 64, 256, 512, 1024}, 2, 6, {8, 32, 64}};
+    case SweepLevel::full: return {200, 2, {16, 64, 256, 1024, 4096, 16384, 65536}, {16, 64, 256, 1024, 2048, 4096}, 4, 40, {8, 32, 128, 300}};
   }
   return {};
 }
@@ -189,6 +202,18 @@ std::vector<CaseSpec> plan_sweep(const PlanOptions& options) {
       const int large = options.seeds > 0 ? std::min(options.seeds, sz.large_seeds) : sz.large_seeds;
       for (const std::int64_t n : g.name == "blob" ? sz.blob_n : sz.star_n) {
         for (int s = 0; s < large; ++s) add(g.variants[0], {{"n", n}});
+      }
+    } else if (is_set_generator(g.name)) {
+      // Few seeds: these run in every sweep (the default one too), each case a few hundred
+      // parts at most; rule 4 (union, the GIS meaning) and 1 (nonzero over all rings at once).
+      const int set_seeds = options.seeds > 0 ? options.seeds : sz.set_seeds;
+      for (int s = 0; s < set_seeds; ++s) {
+        const std::int64_t n = g.name == "random_set" ? sz.set_n[static_cast<std::size_t>(s) % sz.set_n.size()]
+                               : g.name == "coverage_grid" ? 4 + 4 * (s % 3)
+                                                           : 2 + s % 4;
+        for (const auto v : g.variants) {
+          for (const std::int64_t rule : {4, 1}) add(v, {{"n", n}, {"rule", rule}});
+        }
       }
     } else if (is_fill_generator(g.name)) {
       for (int s = 0; s < seeds; ++s) {

@@ -44,9 +44,15 @@ PolygonPair pentagram(const CaseSpec& spec);
 PolygonPair traced_twice(const CaseSpec& spec);
 PolygonPair overlapping_multipart(const CaseSpec& spec);
 bool is_fill_generator(std::string_view name);
+// Sets of polygons for the N-ary operations (generators_set.cpp): a set case's parts run
+// through union_all and intersection_all instead of A op B (operations.hpp).
+MultiPolygon random_set(const CaseSpec& spec);
+MultiPolygon coverage_grid(const CaseSpec& spec);
+MultiPolygon nested_parts(const CaseSpec& spec);
+bool is_set_generator(std::string_view name);
 // The fill rule a case's runs use: the parameter rule = 0-4 (evenodd, nonzero, positive,
-// negative, union; default 0) of a fill generator's case, none for other generators.
-// Throws std::invalid_argument for another value.
+// negative, union) of a fill generator's case (default 0, evenodd) or a set generator's
+// (default 4, union), none for other generators. Throws std::invalid_argument for another value.
 std::optional<FillRule> fill_rule_of(const CaseSpec& spec);
 
 enum class SweepLevel { quick, normal, full };
@@ -56,12 +62,13 @@ struct Generator {
   std::string_view stresses;  // one line for the report and --list
   std::vector<std::string_view> variants;
   PolygonPair (*make)(const CaseSpec&);
+  MultiPolygon (*make_set)(const CaseSpec&) = nullptr;  // set generators instead of make
 };
 
 const std::vector<Generator>& generators();
 const Generator& find_generator(std::string_view name);  // throws std::invalid_argument
 
-// Generates a case from its spec.
+// Generates a case from its spec (a set case: Case::parts, see case.hpp).
 Case make_case(const CaseSpec& spec);
 
 // Generators whose cases come from outside (reported, cases): their inputs may lie outside

@@ -20,15 +20,11 @@
 
 namespace mk::experiments {
 
+using detail::LatticePart;
+using detail::LatticeParts;
 using detail::variant_index;
 
 namespace {
-
-struct LatticePart {
-  IRing shell;
-  std::vector<IRing> holes;
-};
-using LatticeParts = std::vector<LatticePart>;
 
 IRing random_ring(std::mt19937_64& rng, std::int64_t grid, int n) {
   IRing r;
@@ -85,35 +81,6 @@ LatticeParts make_parts(std::string_view generator, std::mt19937_64& rng, std::i
   return parts;
 }
 
-// Each ring reversed or not and started anywhere; the map applied; then doubles.
-MultiPolygon to_multipolygon(std::mt19937_64& rng, const LatticeParts& parts, const LatticeMap& map) {
-  const auto ring = [&](const IRing& r) {
-    IRing m = apply(map, r);
-    if (uniform(rng, 0, 1) == 1) m = reversed(m);
-    return to_ring(shifted_start(m, static_cast<std::size_t>(uniform(rng, 0, static_cast<std::int64_t>(m.size()) - 1))));
-  };
-  MultiPolygon mp;
-  for (const LatticePart& p : parts) {
-    OgcPolygon& o = mp.emplace_back();
-    o.shell = ring(p.shell);
-    for (const IRing& h : p.holes) o.holes.push_back(ring(h));
-  }
-  return mp;
-}
-
-// A rotation by a random angle about the origin, rounded to doubles: shared points stay
-// shared, but crossings leave the lattice and collinear edges mostly stop being collinear.
-void rotate(MultiPolygon& mp, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  const auto turn = [&](Ring& r) {
-    for (Point& p : r) p = {c * p.x - s * p.y, s * p.x + c * p.y};
-  };
-  for (OgcPolygon& p : mp) {
-    turn(p.shell);
-    for (Ring& h : p.holes) turn(h);
-  }
-}
-
 PolygonPair fill_pair(const CaseSpec& spec) {
   auto rng = case_rng(spec);
   const std::size_t v = variant_index(spec, {"lattice", "rotated"});
@@ -122,11 +89,11 @@ PolygonPair fill_pair(const CaseSpec& spec) {
   if (grid < 4) throw std::invalid_argument("generator " + spec.generator + ": grid must be at least 4");
   const LatticeParts a = make_parts(spec.generator, rng, grid), b = make_parts(spec.generator, rng, grid);
   const LatticeMap map = random_lattice_map(rng, 40);
-  MultiPolygon ma = to_multipolygon(rng, a, map), mb = to_multipolygon(rng, b, map);
+  MultiPolygon ma = detail::to_multipolygon(rng, a, map), mb = detail::to_multipolygon(rng, b, map);
   if (v == 1) {
     const double angle = 6.283185307179586 * uniform01(rng);
-    rotate(ma, angle);
-    rotate(mb, angle);
+    detail::rotate(ma, angle);
+    detail::rotate(mb, angle);
   }
   return {fill_rule_polygon(ma, rule), fill_rule_polygon(mb, rule)};
 }
@@ -145,10 +112,11 @@ bool is_fill_generator(std::string_view name) {
 }
 
 std::optional<FillRule> fill_rule_of(const CaseSpec& spec) {
-  if (!is_fill_generator(spec.generator)) return std::nullopt;
+  const bool set = is_set_generator(spec.generator);
+  if (!set && !is_fill_generator(spec.generator)) return std::nullopt;
   constexpr FillRule rules[] = {FillRule::evenodd, FillRule::nonzero, FillRule::positive, FillRule::negative,
                                 FillRule::union_};
-  const std::int64_t r = spec.param("rule", 0);
+  const std::int64_t r = spec.param("rule", set ? 4 : 0);
   if (r < 0 || r > 4) {
     throw std::invalid_argument("generator " + spec.generator + ": rule must be 0-4 (evenodd, nonzero, positive, negative, union)");
   }

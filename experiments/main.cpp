@@ -25,6 +25,7 @@
 #include "experiments/artefacts.hpp"
 #include "experiments/external_cases.hpp"
 #include "experiments/generators.hpp"
+#include "experiments/operations.hpp"
 #include "experiments/peers/peers.hpp"
 #include "experiments/report.hpp"
 #include "experiments/runner.hpp"
@@ -306,15 +307,19 @@ int merge_command(const std::vector<std::string>& dirs, std::string out, bool pl
 
 int case_command(const CaseSpec& spec, const std::string& op_name, bool regular, const std::string& out, bool pictures) {
   const Case c = make_case(spec);
-  const mk::Operation op = parse_operation(op_name);
+  const mk::Operation op = parse_run_operation(op_name);
+  if (!runs_operation(spec, op)) {
+    throw std::invalid_argument("generator " + spec.generator + " makes sets: --op union or intersection (union_all, intersection_all)");
+  }
+  const std::string run_name = run_operation_name(spec, op);
   fs::create_directories(out);
   // External cases are named by their id (a production case keeps its name as a test).
   const std::string stem = (is_external_generator(spec.generator) ? spec.generator + "_" + spec.variant : spec.stem()) +
-                           "_" + op_name + (regular ? "" : "_nonregular");
+                           "_" + run_name + (regular ? "" : "_nonregular");
   std::ofstream(fs::path(out) / (stem + ".wkt")) << regression_case_text(
-      c.a, c.b, op, regular, {"generator=" + spec.generator + " variant=" + spec.variant + " params=" +
-                                  spec.params_text() + " seed=" + std::to_string(spec.seed)});
-  const ExactResult ref = exact_reference(c.a, c.b, op, regular, false, fill_rule_of(spec));
+      c, op, regular, {"generator=" + spec.generator + " variant=" + spec.variant + " params=" +
+                           spec.params_text() + " seed=" + std::to_string(spec.seed)});
+  const ExactResult ref = case_reference(c, op, regular, false);
   std::cout << (fs::path(out) / (stem + ".wkt")).string() << ": " << c.size() << " input vertices, exact result "
             << ref.cycles.size() << " polygons\n";
   if (!pictures) return 0;
@@ -324,20 +329,19 @@ int case_command(const CaseSpec& spec, const std::string& op_name, bool regular,
     try {
       mk::BooleanOptions options{op, regular, std::string(k)};
       options.exact_coordinates = true;  // assess() compares exact results exactly
-      options.fill_rule = fill_rule_of(spec);
-      output = mk::compute(c.a, c.b, options).output;
+      output = run_operation(c, options).output;  // with the case's fill rule
       const Assessment as = assess(*output, ref);
       verdict = std::string(verdict_name(as.verdict)) + (as.note.empty() ? "" : " (" + as.note + ")");
     } catch (const std::exception& e) {
       verdict = std::string("error (") + e.what() + ")";
     }
     const std::string svg = (fs::path(out) / (stem + "_" + std::string(k) + ".svg")).string();
-    std::ofstream(svg) << failure_picture(c.a, c.b, ref.output, "exact " + op_name, output, title + verdict);
+    std::ofstream(svg) << failure_picture(c.a, c.b, ref.output, "exact " + run_name, output, title + verdict);
     std::cout << "  " << k << ": " << verdict << " -> " << svg << "\n";
     if (k == "exact" && output && output->rounding.snapped) {
       // Certified rounding snapped the result: the nearest doubles beside the snapped output.
       const std::string snapped = (fs::path(out) / (stem + "_snapping.svg")).string();
-      std::ofstream(snapped) << snapping_picture(c.a, c.b, op, regular, std::string(k));
+      std::ofstream(snapped) << snapping_picture(c, op, regular, std::string(k));
       std::cout << "  " << k << ": snapped to grid " << output->rounding.grid << " -> " << snapped << "\n";
     }
   }
@@ -421,9 +425,9 @@ int main(int argc, char** argv) {
   one->add_option("--params", case_params, "parameters as in the CSV, e.g. k=-3 or i=4;j=8");
   one->add_option("--seed", spec.seed, "case seed (CSV column seed; any value for reported and cases)")
       ->check(whole_number(0, UINT64_MAX, "a whole number from 0 to 2^64-1"));
-  one->add_option("--op", case_op, "intersection, union, difference or xor (or symdifference)")
+  one->add_option("--op", case_op, "intersection, union, difference or xor (or symdifference); set generators: union or intersection (or union_all, intersection_all)")
       ->capture_default_str()
-      ->check(accepted_by([](const std::string& op) { parse_operation(operation_argument(op)); }, "operation"));
+      ->check(accepted_by([](const std::string& op) { parse_run_operation(operation_argument(op)); }, "operation"));
   one->add_flag("--nonregular", case_nonregular, "non-regular operation");
   one->add_option("-o,--out", case_out, "output directory")->capture_default_str();
   one->add_option("--cases", case_file, "JSON Lines file of generator `cases` (the case is --variant ID)")->check(CLI::ExistingFile);

@@ -53,13 +53,6 @@ std::size_t total(const Counts& c) {
   return n;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 == 1 ? v[m] : (v[m - 1] + v[m]) / 2;
-}
-
 // Kernels in the library's order, then any others the CSV names ("reference" last).
 std::vector<std::string> kernel_order(const std::vector<ResultRow>& rows) {
   std::vector<std::string> out;
@@ -129,8 +122,9 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
   }
 
   md << "# mkbool robustness experiments\n\n";
-  md << "Every run computes one Boolean operation of two generated polygons with one kernel and compares "
-        "the result with the exact result of `RationalKernel`. Verdicts and the CSV columns are defined in "
+  md << "Every run computes one Boolean operation of two generated polygons (or, for the set generators, the "
+        "union or intersection of all polygons of a set) with one kernel and compares the result with the exact "
+        "result of `RationalKernel`. Verdicts and the CSV columns are defined in "
         "`experiments/README.md` of the repository. " << cases.size() << " cases, " << rows.size() << " runs.\n\n";
   if (!sweep_lines.empty()) {
     md << "## Sweep\n\n";
@@ -159,6 +153,7 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
           "below.**\n\n";
   }
 
+  md << fill_and_set_report(rows);
   md << library_report(rows);
   md << rounding_report(rows, artefacts);
 

@@ -29,6 +29,10 @@ std::string report_markdown(const std::vector<ResultRow>& rows, const std::vecto
 // The section "Cost of exactness by fallback strategy" (report_fallbacks.cpp).
 void fallback_section(std::ostream& md, const std::vector<ResultRow>& rows);
 
+// The section "Fill rules and union-all sets" (report_sets.cpp): per fill or set generator,
+// kernel and regularity, correct / wrong / error counts and time; empty without such rows.
+std::string fill_and_set_report(const std::vector<ResultRow>& rows);
+
 // Where plots.py is: $MK_EXPERIMENT_PLOTS, next to the executable, or in the source tree.
 std::string plot_script_path();
 

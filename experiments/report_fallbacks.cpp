@@ -13,6 +13,7 @@
 
 #include "arithmetic/predicates_counters.hpp"
 #include "experiments/report.hpp"
+#include "experiments/statistics.hpp"
 
 namespace mk::experiments {
 
@@ -36,13 +37,6 @@ std::string cell(double v, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
   return buf;
-}
-
-double median_of(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 == 1 ? v[m] : (v[m - 1] + v[m]) / 2;
 }
 
 // "filter=120;interval=3" added into per-stage totals.
@@ -137,7 +131,7 @@ void fallback_section(std::ostream& md, const std::vector<ResultRow>& rows) {
        << (d == per_kernel.end() ? 0 : d->second.size()) << " |";
     for (const auto* s : shown) {
       const auto it = per_kernel.find(s->kernel);
-      md << " " << (it == per_kernel.end() ? std::string() : cell(median_of(it->second), 2)) << " |";
+      md << " " << (it == per_kernel.end() ? std::string() : cell(median(it->second), 2)) << " |";
     }
     md << "\n";
   }

@@ -1,5 +1,6 @@
 // The runs of one case: the exact reference per (op, regular), then every kernel through
-// the public API, each assessed against the reference. [MK89 §3.2] [MK89 §3.3]
+// the public API (operations.hpp: a pair or a set case), each assessed against the
+// reference. [MK89 §3.2] [MK89 §3.3]
 // Preconditions: see runner.hpp.
 #include <algorithm>
 #include <array>
@@ -15,6 +16,7 @@
 #include "api/mkbool.hpp"
 #include "experiments/generators.hpp"
 #include "experiments/ogc.hpp"
+#include "experiments/operations.hpp"
 #include "experiments/peer_verdict.hpp"
 #include "experiments/peers/peers.hpp"
 #include "experiments/runner.hpp"
@@ -101,7 +103,7 @@ ResultRow base_row(const IndexedCase& c, std::size_t size, Operation op, bool re
   r.params = c.spec.params_text();
   r.seed = c.spec.seed;
   r.size = size;
-  r.op = std::string(operation_name(op));
+  r.op = run_operation_name(c.spec, op);
   r.regular = regular;
   return r;
 }
@@ -220,10 +222,9 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
   const std::size_t per_group = 1 + o.kernels.size();
   const bool paper_variants = cs.size() <= o.paper_reference_limit;
   const bool external = is_external_generator(c.spec.generator);
-  // Fill-rule cases (generators_fill.cpp): regular operations only, and no peers (their
-  // adapters read the rings as OGC polygons, not by a fill rule).
-  const std::optional<FillRule> fill_rule = fill_rule_of(c.spec);
-  const bool with_peers = !fill_rule && runs_peers(c, cs.size(), o) &&
+  // Fill-rule and set cases (generators_fill.cpp, generators_set.cpp): no peers (their
+  // adapters read the rings as OGC polygons, not by a fill rule, and run binary operations).
+  const bool with_peers = !fill_rule_of(c.spec) && runs_peers(c, cs.size(), o) &&
                           std::any_of(o.kernels.begin(), o.kernels.end(), [](const std::string& k) { return is_peer(k); });
   std::optional<MultiPolygon> a_ogc = cs.a_ogc, b_ogc = cs.b_ogc;
   if (with_peers && !external) {
@@ -235,12 +236,12 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
     const bool regular = o.regular[g % o.regular.size()];
     const std::size_t base = g * per_group;
     const std::size_t first_kernel = first_slot > base ? first_slot - base - 1 : 0;
-    if (fill_rule && !regular) continue;
+    if (!runs_operation(c.spec, op)) continue;  // set cases: union and intersection only
     // The reference (recomputed when a run after it in this group crashed or timed out).
     on_start(base);
     ExactResult ref;
     try {
-      ref = exact_reference(cs.a, cs.b, op, regular, paper_variants, fill_rule);
+      ref = case_reference(cs, op, regular, paper_variants);
     } catch (const std::exception& e) {
       ResultRow r = base_row(c, cs.size(), op, regular);
       r.kernel = "reference";
@@ -290,8 +291,7 @@ void run_built_case(const IndexedCase& c, const Case& cs, const RunOptions& o, s
         options.exact_coordinates = true;  // assess() compares exact results exactly
         options.rounding = o.rounding;
         options.grid = o.grid;
-        options.fill_rule = fill_rule;
-        const BooleanOutput out = compute(cs.a, cs.b, options);
+        const BooleanOutput out = run_operation(cs, options);  // with the case's fill rule
         const Counts counts = read_counters();
         r.predicate_calls = counts.calls;
         r.predicate_fallbacks = counts.fallbacks;

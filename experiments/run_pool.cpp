@@ -20,6 +20,7 @@
 #include <stdexcept>
 
 #include "experiments/generators.hpp"
+#include "experiments/operations.hpp"
 #include "experiments/runner.hpp"
 
 namespace mk::experiments {
@@ -252,7 +253,7 @@ class Pool {
     r.size = size;
     const std::size_t per_group = 1 + o_.kernels.size();
     const std::size_t g = slot / per_group, in_group = slot % per_group;
-    r.op = std::string(operation_name(o_.ops[g / o_.regular.size()]));
+    r.op = run_operation_name(c.spec, o_.ops[g / o_.regular.size()]);
     r.regular = o_.regular[g % o_.regular.size()];
     r.kernel = in_group == 0 ? "reference" : o_.kernels[in_group - 1];
     r.verdict = timed_out ? Verdict::timeout : Verdict::crash;

@@ -13,6 +13,7 @@
 #include "api/mkbool.hpp"
 #include "arithmetic/kernels/exact_kernel.hpp"
 #include "core/ogc_validity.hpp"
+#include "experiments/operations.hpp"
 #include "experiments/peers/peers.hpp"
 #include "experiments/pictures.hpp"
 
@@ -92,19 +93,18 @@ std::vector<const ResultRow*> snapped_runs_to_picture(const std::vector<ResultRo
   return out;
 }
 
-std::string snapping_picture(const Polygon& a, const Polygon& b, Operation op, bool regular,
-                             const std::string& kernel) {
+std::string snapping_picture(const Case& c, Operation op, bool regular, const std::string& kernel) {
   BooleanOptions options{op, regular, kernel};
   options.area = false;
   options.rounding = RoundingMode::nearest;
-  const Output nearest = compute(a, b, options).output;
+  const Output nearest = run_operation(c, options).output;
   options.rounding = RoundingMode::certified;
-  const Output certified = compute(a, b, options).output;
+  const Output certified = run_operation(c, options).output;
   const double spacing = certified.rounding.snapped ? power_of_two_spacing(certified.rounding.grid) : 0;
   // Three grid steps each side: the moved vertices and the pixels they went to. Moves are
   // below a grid step (about an ulp of the largest coordinate): never visible unzoomed.
   const ZoomOptions zoom{"nearest doubles", "certified output", 3 * spacing, spacing, true};
-  return failure_picture(a, b, as_written(nearest), nearest_title(nearest), as_written(certified),
+  return failure_picture(c.a, c.b, as_written(nearest), nearest_title(nearest), as_written(certified),
                          certified_title(certified), zoom);
 }
 

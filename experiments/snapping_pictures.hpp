@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/polygon.hpp"
+#include "experiments/case.hpp"
 #include "experiments/results.hpp"
 
 namespace mk::experiments {
@@ -22,8 +23,8 @@ std::vector<const ResultRow*> snapped_runs_to_picture(const std::vector<ResultRo
 // The SVG: left, A, B and the result rounded to the nearest doubles (titled with the exact
 // OGC check's reason when invalid, and GEOS's where built); right, A, B and the output as
 // certified rounding writes it (titled with its grid and largest vertex move); a zoom on
-// the first difference that marks the grid's points. Computes the operation twice.
-std::string snapping_picture(const Polygon& a, const Polygon& b, Operation op, bool regular,
-                             const std::string& kernel);
+// the first difference that marks the grid's points. Computes the case's operation twice
+// (operations.hpp: pair or set case, with its fill rule).
+std::string snapping_picture(const Case& c, Operation op, bool regular, const std::string& kernel);
 
 }  // namespace mk::experiments

@@ -4,9 +4,12 @@
 // Preconditions: k <= n.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace mk::experiments {
 
@@ -55,6 +58,14 @@ inline std::string share_with_interval(std::size_t k, std::size_t n) {
   const auto [lo, hi] = wilson_interval(k, n);
   return percent(static_cast<double>(k) / static_cast<double>(n)) + " [" + (lo == 0 ? std::string("0") : percent(lo)) +
          "–" + percent(hi) + "] of " + std::to_string(n);
+}
+
+// The median of the values (the mean of the middle two for an even count); NaN when empty.
+inline double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 == 1 ? v[m] : (v[m - 1] + v[m]) / 2;
 }
 
 }  // namespace mk::experiments

@@ -98,6 +98,15 @@ std::vector<ExactCycle> exact_cycles(const Output& output) {
   return out;
 }
 
+ExactResult exact_result_of(Output output) {
+  ExactResult out;
+  out.output = std::move(output);
+  out.unbounded = out.output.unbounded;
+  out.cycles = exact_cycles(out.output);
+  if (!out.unbounded) out.area = typed_area(out.cycles);
+  return out;
+}
+
 ExactResult exact_reference(const Polygon& a, const Polygon& b, Operation op, bool regular, bool paper_variants,
                             std::optional<FillRule> fill_rule) {
   if (fill_rule) {
@@ -106,12 +115,7 @@ ExactResult exact_reference(const Polygon& a, const Polygon& b, Operation op, bo
     o.all_pairs = paper_variants;
     o.area = false;
     o.exact_coordinates = true;
-    ExactResult out;
-    out.output = compute(a, b, o).output;
-    out.unbounded = out.output.unbounded;
-    out.cycles = exact_cycles(out.output);
-    if (!out.unbounded) out.area = typed_area(out.cycles);
-    return out;
+    return exact_result_of(compute(a, b, o).output);
   }
   const Options opt{op, regular, paper_variants ? EfOrganisation::sorted : EfOrganisation::hash,
                     paper_variants ? PairSearch::all_pairs : PairSearch::sweep};

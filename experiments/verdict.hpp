@@ -65,9 +65,11 @@ struct ExactResult {
 // all-pairs intersection search, so that the `rational` kernel run through the API (hash
 // table, sweep) is checked against a partly independent path.
 // With a fill rule (cases of the fill generators), RationalKernel on the rings read by the
-// rule, through the library (regular only; paper_variants: all-pairs search).
+// rule, through the library (paper_variants: all-pairs search).
 ExactResult exact_reference(const Polygon& a, const Polygon& b, Operation op, bool regular, bool paper_variants,
                             std::optional<FillRule> fill_rule = std::nullopt);
+// The ExactResult of an exact kernel's output asked for with exact coordinates.
+ExactResult exact_result_of(Output output);
 
 struct Assessment {
   Verdict verdict = Verdict::exact_match;

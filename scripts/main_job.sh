@@ -1,7 +1,8 @@
 #!/bin/sh
 # The project's main job: build everything in Release and run the default robustness sweep
 # of every kernel and peer library (GEOS, Boost.Geometry, Clipper, CGAL; peers on a sample of
-# the generated cases and on every reported case) against the exact result; the report is
+# the generated cases and on every reported case) against the exact result, with a small
+# union_all / intersection_all run of the set generators (72 cases); the report is
 # report/README.md.
 # [MK89 §3.3] See experiments/README.md for the sweep levels, the CSV schema and verdicts.
 # Preconditions: run from anywhere inside the repository; Debian 12 packages of BRIEF.md §9

@@ -9,6 +9,7 @@
 #include "arithmetic/kernels/rational_kernel.hpp"
 #include "core/error.hpp"
 #include "experiments/generators.hpp"
+#include "experiments/operations.hpp"
 #include "experiments/runner.hpp"
 #include "experiments/verdict.hpp"
 
@@ -35,7 +36,8 @@ TEST(Generators, EveryVariantBuildsAValidInputReproducibly) {
         EXPECT_EQ(c.a.rings, again.a.rings);
         EXPECT_EQ(c.b.rings, again.b.rings);
         EXPECT_EQ(c.a.type, again.a.type);
-        EXPECT_NO_THROW(exact_reference(c.a, c.b, Operation::intersection, true, true, fill_rule_of(spec)));
+        EXPECT_NO_THROW(case_reference(c, Operation::intersection, true, true));
+        EXPECT_EQ(c.parts.has_value(), is_set_generator(spec.generator));
       }
     }
   }
@@ -53,12 +55,12 @@ TEST(Generators, ValidityAcceptsEveryValidExactResult) {
         for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
                                    Operation::symmetric_difference}) {
           for (const bool regular : {true, false}) {
-            if (!regular && fill_rule_of(spec)) continue;  // fill rules: regular results only
-            const ExactResult ref = exact_reference(c.a, c.b, op, regular, false, fill_rule_of(spec));
+            if (!runs_operation(spec, op)) continue;  // set cases: union_all and intersection_all
+            const ExactResult ref = case_reference(c, op, regular, false);
             if (ref.output.rounded_valid != true) continue;
             std::string why;
             EXPECT_TRUE(is_valid_output(ref.output, ccw_type_of(ref), &why))
-                << spec.generator << " " << spec.variant << " seed " << spec.seed << " " << operation_name(op)
+                << spec.generator << " " << spec.variant << " seed " << spec.seed << " " << run_operation_name(spec, op)
                 << (regular ? "" : " non-regular") << ": " << why;
             ++checked;
           }
@@ -156,10 +158,15 @@ TEST(Plan, QuickPlanIsReproducibleWithDistinctSeeds) {
     names.insert(a[i].generator);
   }
   // Every generator has cases, except `cases`, which runs only the user's file (run --cases),
-  // and the fill generators, which run when named.
+  // and the fill generators, which run when named; the set generators run in every plan.
   std::size_t fill = 0;
-  for (const Generator& g : generators()) fill += is_fill_generator(g.name) ? 1 : 0;
-  EXPECT_EQ(fill, 5u);
+  for (const Generator& g : generators()) {
+    fill += is_fill_generator(g.name) ? 1 : 0;
+    if (is_set_generator(g.name)) {
+      EXPECT_TRUE(names.count(std::string(g.name))) << g.name;
+    }
+  }
+  EXPECT_GT(fill, 0u);
   EXPECT_EQ(names.size(), generators().size() - 1 - fill);
   EXPECT_FALSE(names.count("cases"));
   EXPECT_TRUE(names.count("reported"));

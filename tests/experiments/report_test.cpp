@@ -1,7 +1,9 @@
-// Test of the report's section "Cost of exactness by fallback strategy"
+// Tests of the report's section "Cost of exactness by fallback strategy"
 // (experiments/report_fallbacks.cpp) on hand-made rows: medians of per-run time ratios to
 // `double`, only the generators where a call left its filter, and the share of calls each
-// stage decided, summed from the predicate_stages column. [MK89 §3.3]
+// stage decided, summed from the predicate_stages column; and of the section "Fill rules
+// and union-all sets" (report_sets.cpp): its counts and times per generator, kernel and
+// regularity. [MK89 §3.3]
 // Preconditions: none.
 #include <gtest/gtest.h>
 
@@ -74,6 +76,30 @@ TEST(ReportFallbacks, WithoutCountersEveryGeneratorAndNoShares) {
   EXPECT_NE(md.find("built without predicate counters"), std::string::npos) << md;
   EXPECT_NE(md.find("| blob | 1 | 1.10 | 15.00 |"), std::string::npos) << md;
   EXPECT_EQ(md.find("Share of predicate calls"), std::string::npos) << md;
+}
+
+// random_set, regular: exact matched twice (1 and 3 ms: median 2); double gave a valid
+// different result, an invalid one and an error (no time); non-regular: one exact run.
+// Generators of neither kind are left out.
+TEST(ReportSets, CountsAndTimesPerGeneratorKernelAndRegularity) {
+  std::vector<ResultRow> rows{row(0, "random_set", "exact", 1000000), row(1, "random_set", "exact", 3000000)};
+  for (const Verdict v : {Verdict::valid_different, Verdict::invalid_output, Verdict::error}) {
+    ResultRow r = row(0, "random_set", "double", 500000);
+    r.verdict = v;
+    if (v == Verdict::error) r.op_ns.reset();
+    rows.push_back(r);
+  }
+  ResultRow closed = row(0, "random_set", "exact", 2000000);
+  closed.regular = false;
+  rows.push_back(closed);
+  rows.push_back(row(2, "shared_edge", "exact", 1000));
+  const std::string md = fill_and_set_report(rows);
+  EXPECT_NE(md.find("## Fill rules and union-all sets"), std::string::npos) << md;
+  EXPECT_NE(md.find("| random_set | exact | yes | 2 | 2 | 0 | 0 | 0 | 2 | 0.004 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| random_set | exact | no | 1 | 1 | 0 | 0 | 0 | 2 | 0.002 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| random_set | double | yes | 3 | 0 | 1 | 1 | 1 | 0.5 | 0.001 |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("shared_edge"), std::string::npos) << md;
+  EXPECT_EQ(fill_and_set_report({row(2, "shared_edge", "exact", 1000)}), "");
 }
 
 }  // namespace

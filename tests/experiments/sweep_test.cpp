@@ -61,31 +61,6 @@ TEST(Sweep, TinySweepInProcess) {
   for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_LE(rows[i - 1].case_index, rows[i].case_index);
 }
 
-// Fill-rule cases: each named fill generator plans every rule (param rule = 0-4) and variant,
-// runs regular operations only, every exact kernel equals the rule's exact reference, and the
-// peers are left out (they do not read fill rules).
-TEST(Sweep, FillGeneratorsRunEveryRuleRegularOnly) {
-  const std::vector<std::string> names{"self_crossing_random", "bowtie_degenerate", "pentagram", "traced_twice",
-                                       "overlapping_multipart"};
-  const auto plan = plan_sweep({SweepLevel::quick, 1, 11, names});
-  ASSERT_EQ(plan.size(), names.size() * 2 * 5);
-  std::set<std::int64_t> rules;
-  for (const auto& c : plan) rules.insert(c.param("rule", -1));
-  EXPECT_EQ(rules, (std::set<std::int64_t>{0, 1, 2, 3, 4}));
-  RunOptions o;
-  o.kernels = all_kernels();
-  const std::size_t kernels = o.kernels.size();
-  for (const auto p : peer_names()) o.kernels.emplace_back(p);
-  o.isolate = false;
-  const auto rows = run_sweep(select_shard(plan, {}), o, "");
-  EXPECT_EQ(rows.size(), plan.size() * 4 * kernels);  // 4 regular operations, no peer
-  for (const auto& r : rows) {
-    EXPECT_TRUE(r.regular) << to_csv(r);
-    EXPECT_FALSE(is_peer(r.kernel)) << to_csv(r);
-  }
-  expect_exact_kernels_match(rows);
-}
-
 // --grid: every bounded result of an exact kernel is snapped onto the user's grid and
 // written valid, and verdicts still compare the exact results; --rounding nearest leaves
 // the nearest doubles and never snaps.

@@ -4,6 +4,8 @@
 // CGAL Epeck and the membership oracle (tests/oracle/checks.hpp).
 // To add one: copy a file the harness wrote (DIR/regression/<generator>_<seed>.wkt, see
 // experiments/README.md) into tests/regression/cases/; it is picked up at the next run.
+// Fill-rule and set cases (a fill_rule line; union_all, intersection_all) are checked by
+// their exact area against CGAL's arrangement of every ring (tests/oracle/cgal_winding.hpp).
 // [BRIEF §5] (every failure becomes a regression case) [BRIEF §1]
 // Preconditions: the cases are in the format of mk::experiments::read_regression_case.
 #include <gtest/gtest.h>
@@ -15,7 +17,9 @@
 #include <regex>
 #include <sstream>
 
+#include "api/mkbool.hpp"
 #include "experiments/artefacts.hpp"
+#include "tests/oracle/cgal_winding.hpp"
 #include "tests/oracle/checks.hpp"
 #include "tests/oracle/families.hpp"
 
@@ -49,6 +53,64 @@ TEST(Regression, EveryCaseFileIsNamedAfterItsGeneratorAndReadable) {
   }
 }
 
+QRing exact_ring(const Ring& r) {
+  QRing q;
+  for (const Point& p : r) q.push_back({Q(p.x), Q(p.y)});
+  return q;
+}
+
+// Fill-rule and set cases (experiments/README.md, "Set cases"): the exact area CGAL's
+// arrangement of every ring gives, the faces selected by the winding numbers of each
+// operand's rings (A and B; a set's rings together for union_all, each part on its own for
+// intersection_all, every part as fill_rule_polygon orients it) under the case's rule.
+Q arrangement_area(const experiments::RegressionCase& c) {
+  const FillRule rule = c.fill_rule.value_or(FillRule::union_);
+  std::vector<std::vector<Ring>> groups;
+  if (!c.parts) {
+    groups = {c.a.rings, c.b.rings};
+  } else if (c.op == Operation::union_) {
+    groups = {fill_rule_polygon(*c.parts, rule).rings};
+  } else {
+    for (const OgcPolygon& part : *c.parts) groups.push_back(fill_rule_polygon(MultiPolygon{part}, rule).rings);
+  }
+  std::vector<std::vector<QRing>> operands;
+  std::vector<std::size_t> group_of;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    for (const Ring& r : groups[g]) {
+      operands.push_back({exact_ring(r)});
+      group_of.push_back(g);
+    }
+  }
+  const WindingArrangement arr(operands);
+  EXPECT_EQ(arr.inconsistency(), "");
+  return arr.area(arr.select([&](const std::vector<int>& w) {
+    std::vector<int> sum(groups.size(), 0);
+    for (std::size_t i = 0; i < w.size(); ++i) sum[group_of[i]] += w[i];
+    std::vector<bool> in;
+    for (const int v : sum) in.push_back(is_filled(rule, v));
+    if (!c.parts) return face_in_result(c.op, in[0], in[1]);
+    const bool in_all = std::find(in.begin(), in.end(), false) == in.end();
+    return c.op == Operation::union_ ? in[0] : in_all;  // union_all: one group of all rings
+  }));
+}
+
+// The case's operation, regular and not, with every exact kernel: its exact area (the
+// regular part's) is the arrangement's.
+void check_by_arrangement(const experiments::RegressionCase& c, const std::string& name) {
+  const Q expected = arrangement_area(c);
+  std::cout << name << ": area about " << expected.get_d() << " by CGAL's arrangement, compared exactly\n";
+  for (const auto k : kernel_names()) {
+    if (!is_exact_kernel(k)) continue;
+    for (const bool regular : {true, false}) {
+      BooleanOptions o{c.op, regular, std::string(k)};
+      o.area_exact = true;
+      const BooleanOutput r = experiments::replay_regression_case(c, o);
+      EXPECT_EQ(r.stats.area_exact.value_or("?"), expected.get_str())
+          << name << ": " << k << (regular ? " regular" : " non-regular");
+    }
+  }
+}
+
 TEST(Regression, EveryCaseAgreesWithCgalEpeckAndTheMembershipOracle) {
   Tally tally;
   for (const auto& f : case_files()) {
@@ -56,6 +118,10 @@ TEST(Regression, EveryCaseAgreesWithCgalEpeckAndTheMembershipOracle) {
     std::stringstream text;
     text << in.rdbuf();
     const experiments::RegressionCase c = experiments::read_regression_case(text.str());
+    if (c.fill_rule || c.parts) {
+      check_by_arrangement(c, f.filename().string());
+      continue;
+    }
     const References refs = References::of(c.a, c.b);
     std::mt19937_64 rng(1);
     // The case's own operation first, then the other seven.
