@@ -66,7 +66,7 @@ LatticeParts make_parts(std::string_view generator, std::mt19937_64& rng, std::i
   } else if (generator == "pentagram") {
     part(star_polygon(rng));
     if (uniform(rng, 0, 2) == 0) part(rectangle(rng, grid));
-  } else if (generator == "traced_twice") {  // winding 2, or 0 with the second part reversed
+  } else if (generator == "traced_twice") {  // winding 2, or 3 or 1 with the ring again
     const IRing r = uniform(rng, 0, 1) == 0 ? rectangle(rng, grid) : random_ring(rng, grid, 4);
     IRing twice = r;
     twice.insert(twice.end(), r.begin(), r.end());
