@@ -17,29 +17,38 @@
 
 namespace mk::gmp {
 
-// Sign of (q1 - p1) x (q2 - p2). Every finite double is m * 2^e with an integer |m| < 2^53;
-// multiplying all eight inputs by 2^-e_min makes them integers, and the sign of a degree-2
-// form does not change under a positive common factor. Integers avoid the gcd work that
+// The n doubles of v as integers z[i] = v[i] * 2^-e_min, one power of two for all: every
+// finite double is m * 2^e with an integer |m| < 2^53, and e_min is the least such e among
+// the non-zero ones. A predicate whose sign does not change under a positive common factor
+// (a homogeneous form) can then be evaluated in integers, which avoid the gcd work that
 // rationals do after every operation.
+inline void scaled_integers(const double* v, std::size_t n, mpz_class* z) {
+  int e_min = INT_MAX;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (v[i] == 0.0) continue;
+    int e = 0;
+    (void)std::frexp(v[i], &e);  // v = f * 2^e, 0.5 <= |f| < 1, so v = (f * 2^53) * 2^(e - 53)
+    e_min = std::min(e_min, e - 53);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    mpz_ptr zi = z[i].get_mpz_t();
+    if (v[i] == 0.0) {
+      mpz_set_ui(zi, 0);
+      continue;
+    }
+    int e = 0;
+    const double f = std::frexp(v[i], &e);
+    mpz_set_d(zi, std::ldexp(f, 53));  // an integer below 2^53: exact
+    mpz_mul_2exp(zi, zi, static_cast<mp_bitcnt_t>(e - 53 - e_min));
+  }
+}
+
+// Sign of (q1 - p1) x (q2 - p2), a degree-2 form, in scaled integers.
 inline int cross_sign(double p1x, double p1y, double q1x, double q1y, double p2x, double p2y,
                       double q2x, double q2y) {
   const std::array<double, 8> v{p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y};
-  int e_min = INT_MAX;
-  for (const double x : v) {
-    if (x == 0.0) continue;
-    int e = 0;
-    (void)std::frexp(x, &e);  // x = f * 2^e, 0.5 <= |f| < 1, so x = (f * 2^53) * 2^(e - 53)
-    e_min = std::min(e_min, e - 53);
-  }
-  if (e_min == INT_MAX) return 0;  // all inputs zero
   std::array<mpz_class, 8> z;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (v[i] == 0.0) continue;
-    int e = 0;
-    const double f = std::frexp(v[i], &e);
-    z[i] = mpz_class(std::ldexp(f, 53));  // an integer below 2^53: exact
-    mpz_mul_2exp(z[i].get_mpz_t(), z[i].get_mpz_t(), static_cast<mp_bitcnt_t>(e - 53 - e_min));
-  }
+  scaled_integers(v.data(), v.size(), z.data());
   return sgn(formula::cross_of_differences<mpz_class>(z[0], z[1], z[2], z[3], z[4], z[5], z[6], z[7]));
 }
 

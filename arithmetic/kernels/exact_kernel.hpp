@@ -8,6 +8,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <array>
 #include <cfenv>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "arithmetic/crossing_rounding.hpp"
 #include "arithmetic/interval_filter.hpp"
 #include "arithmetic/kernels/rational_kernel.hpp"
+#include "arithmetic/predicates_gmp.hpp"
 #include "arithmetic/rounding_guard.hpp"
 #include "kernel/kernel.hpp"
 
@@ -85,11 +87,28 @@ struct ExactKernel {
         ok = std::isfinite(v.lo[0]) && std::isfinite(v.hi[0]) && std::isfinite(v.lo[1]) && std::isfinite(v.hi[1]);
       }
     }
-    if (!ok) {  // no useful box: every comparison goes to the exact stage
+    if (!ok) {  // no useful box yet: every comparison would go to the exact stage
       v.lo = {-HUGE_VAL, -HUGE_VAL};
       v.hi = {HUGE_VAL, HUGE_VAL};
     }
+    if (!ok || is_wide(v.lo[0], v.hi[0]) || is_wide(v.lo[1], v.hi[1])) tighten(v);
     return v;
+  }
+  // Whether [lo, hi] spans more than about 16 ulps of its bounds: the crossing of nearly
+  // parallel segments, whose denominator cancels (rotated lattice parts sharing lines make
+  // many). Their boxes overlapped so often that sorting went to the exact stage for most
+  // comparisons.
+  static bool is_wide(double lo, double hi) { return !(hi - lo <= 0x1p-48 * std::max(std::fabs(lo), std::fabs(hi))); }
+  // The box around the crossing's nearest doubles p (from exact expansions): the crossing
+  // lies within half a gap of p, so between p's neighbours; kept only where narrower.
+  static void tighten(Vertex& v) {
+    mk::Point p;
+    if (!nearest_crossing(v.a0, v.a1, v.b0, v.b1, p)) return;
+    const double c[2] = {p.x, p.y};
+    for (int axis = 0; axis < 2; ++axis) {
+      v.lo[axis] = std::max(v.lo[axis], std::nextafter(c[axis], -HUGE_VAL));
+      v.hi[axis] = std::min(v.hi[axis], std::nextafter(c[axis], HUGE_VAL));
+    }
   }
 
   // Whether two crossings are of the same two segments (each given either way round, in
@@ -106,6 +125,74 @@ struct ExactKernel {
   // The box the vertex certainly lies in (VertexBoxes): an input point's is the point.
   static std::array<double, 4> vertex_box(const Vertex& v) { return {v.lo[0], v.lo[1], v.hi[0], v.hi[1]}; }
 
+  // The exact stage without rationals. A vertex as homogeneous integer coordinates
+  // (X, Y) / D, D > 0, over the doubles of all the vertices one predicate compares, scaled
+  // to integers by one power of two (gmp::scaled_integers): a crossing's coordinates are
+  // degree-3 forms over a degree-2 denominator, a point's its own coordinates over 1, so
+  // every vertex is scaled by the same factor and the predicates' signs do not change.
+  // Integers need no gcd after each operation, which the rationals of exact() do: a set of
+  // nearly collinear shared edges (rotated lattice parts) made the rationals' gcds most of a
+  // union-all's time.
+  struct Homogeneous {
+    mpz_class x, y, d;
+  };
+  // Into thread-local integers reused from call to call (their limbs stay allocated): the
+  // exact stage runs often on such inputs, and allocation was most of its cost.
+  template <std::size_t K>
+  static const std::array<Homogeneous, K>& homogeneous(const std::array<const Vertex*, K>& vs) {
+    thread_local std::array<mpz_class, 8 * K> z;
+    thread_local std::array<mpz_class, 6> t;
+    thread_local std::array<Homogeneous, K> out;
+    std::array<double, 8 * K> in{};
+    std::size_t n = 0;
+    for (const Vertex* v : vs) {
+      for (const Point* p : {&v->a0, &v->a1, &v->b0, &v->b1}) {
+        in[n++] = p->x;
+        in[n++] = p->y;
+        if (!v->is_crossing) break;
+      }
+    }
+    gmp::scaled_integers(in.data(), n, z.data());
+    const auto at = [&](std::size_t i) { return z[i].get_mpz_t(); };
+    mpz_ptr dax = t[0].get_mpz_t(), day = t[1].get_mpz_t(), dbx = t[2].get_mpz_t(), dby = t[3].get_mpz_t();
+    mpz_ptr diff = t[4].get_mpz_t(), num = t[5].get_mpz_t();
+    std::size_t i = 0;
+    for (std::size_t k = 0; k < K; ++k) {
+      mpz_ptr x = out[k].x.get_mpz_t(), y = out[k].y.get_mpz_t(), d = out[k].d.get_mpz_t();
+      if (!vs[k]->is_crossing) {
+        mpz_set(x, at(i));
+        mpz_set(y, at(i + 1));
+        mpz_set_ui(d, 1);
+        i += 2;
+        continue;
+      }
+      const mpz_srcptr a0x = at(i), a0y = at(i + 1), a1x = at(i + 2), a1y = at(i + 3);
+      const mpz_srcptr b0x = at(i + 4), b0y = at(i + 5), b1x = at(i + 6), b1y = at(i + 7);
+      i += 8;
+      // As formula::line_crossing: a0 + t (a1 - a0), t = N / D, N = (b0 - a0) x db, D = da x db.
+      mpz_sub(dax, a1x, a0x);
+      mpz_sub(day, a1y, a0y);
+      mpz_sub(dbx, b1x, b0x);
+      mpz_sub(dby, b1y, b0y);
+      mpz_mul(d, dax, dby);
+      mpz_submul(d, day, dbx);
+      mpz_sub(diff, b0x, a0x);
+      mpz_mul(num, diff, dby);
+      mpz_sub(diff, b0y, a0y);
+      mpz_submul(num, diff, dbx);
+      mpz_mul(x, a0x, d);  // X = a0x D + N dax, Y = a0y D + N day
+      mpz_addmul(x, num, dax);
+      mpz_mul(y, a0y, d);
+      mpz_addmul(y, num, day);
+      if (mpz_sgn(d) < 0) {
+        mpz_neg(d, d);
+        mpz_neg(x, x);
+        mpz_neg(y, y);
+      }
+    }
+    return out;
+  }
+
   static RationalPoint exact(const Vertex& v) {
     if (!v.is_crossing) return RationalKernel::point(v.a0);
     return RationalKernel::crossing(RationalKernel::point(v.a0), RationalKernel::point(v.a1),
@@ -119,9 +206,12 @@ struct ExactKernel {
     if (v.hi[axis] < u.lo[axis]) return Sign::positive;
     if (!u.is_crossing && !v.is_crossing) return Sign::zero;  // equal doubles
     if (u.is_crossing && v.is_crossing && same_segments(u, v)) return Sign::zero;  // one crossing found twice
-    const RationalPoint eu = exact(u);
-    const RationalPoint ev = exact(v);
-    return sign_of(axis == 0 ? cmp(eu.x, ev.x) : cmp(eu.y, ev.y));
+    const std::array<Homogeneous, 2>& h = homogeneous<2>({&u, &v});
+    thread_local mpz_class lhs, rhs;
+    // cu / du - cv / dv, times du dv > 0
+    mpz_mul(lhs.get_mpz_t(), (axis == 0 ? h[0].x : h[0].y).get_mpz_t(), h[1].d.get_mpz_t());
+    mpz_mul(rhs.get_mpz_t(), (axis == 0 ? h[1].x : h[1].y).get_mpz_t(), h[0].d.get_mpz_t());
+    return sign_of(mpz_cmp(lhs.get_mpz_t(), rhs.get_mpz_t()));
   }
   static Sign compare_vertices(const Vertex& u, const Vertex& v) {
     const Sign s = compare_coordinate(0, u, v);
@@ -143,7 +233,11 @@ struct ExactKernel {
   static Sign orient_vertices(const Vertex& a, const Vertex& b, const Vertex& c) {
     if (!a.is_crossing && !b.is_crossing && !c.is_crossing) return orient2d(a.a0, b.a0, c.a0);
     if (const Sign s = orient_boxes(a, b, c); s != Sign::zero) return s;
-    return RationalKernel::orient2d(exact(a), exact(b), exact(c));
+    // (b - a) x (c - a) with each point (X, Y) / D, times Da^2 Db Dc > 0.
+    const auto& [ha, hb, hc] = homogeneous<3>({&a, &b, &c});
+    const mpz_class bx = hb.x * ha.d - ha.x * hb.d, by = hb.y * ha.d - ha.y * hb.d;
+    const mpz_class cx = hc.x * ha.d - ha.x * hc.d, cy = hc.y * ha.d - ha.y * hc.d;
+    return sign_of(cmp(bx * cy, by * cx));
   }
   // The sign of (b - a) x (c - a) for every choice of points in the three boxes, or zero
   // when the boxes leave it open. Boxes within 2^500 of the origin only: their differences'

@@ -131,5 +131,71 @@ TEST(ExactKernelComparison, OneCrossingFoundTwiceIsOnePoint) {
   EXPECT_GT(distinct_checked, 4000);
 }
 
+// Nearly parallel segments (a lattice line and its copy turned by a rounded angle) cross at
+// points whose interval boxes are wide; the kernel then tightens them from the nearest
+// doubles. Every box must contain the exact crossing, and the orders and orientations of
+// such crossings, of crossings a few ulps apart and of the segments' own end points must
+// be what the rationals say, at every scale and with the coordinates' magnitudes far apart
+// (the exact stage scales all of a predicate's doubles by one power of two).
+TEST(ExactKernelComparison, NearlyParallelCrossingsAndMixedMagnitudes) {
+  std::mt19937_64 rng(34);
+  int tightened = 0, compared = 0, decided_exactly = 0;
+  Tally orientations;
+  for (int i = 0; i < 4000; ++i) {
+    const int e = static_cast<int>(rng() % 1200) - 600;
+    const double s = std::ldexp(1.0, e);
+    // A segment p0p1 and its copy turned about a point of it by about 2^-40 radians.
+    const Point p0{test::random_double(rng, e - 2, e), test::random_double(rng, e - 2, e)};
+    const Point p1{p0.x + s * (1 + 0.25 * (rng() % 4)), p0.y + s * 0.5 * (rng() % 3)};
+    const double angle = std::ldexp(1.0 + (rng() % 1024) / 1024.0, -40 - static_cast<int>(rng() % 8));
+    const double f = 0.1 + 0.8 * (rng() % 1000) / 1000.0;
+    const Point c{p0.x + f * (p1.x - p0.x), p0.y + f * (p1.y - p0.y)};
+    const auto turned = [&](const Point& p, double a) {
+      const double dx = p.x - c.x, dy = p.y - c.y;
+      return Point{c.x + dx * std::cos(a) - dy * std::sin(a), c.y + dx * std::sin(a) + dy * std::cos(a)};
+    };
+    const Point q0 = turned(p0, angle), q1 = turned(p1, angle);
+    const Point r0 = turned(p0, -angle * 0.75), r1 = turned(p1, -angle * 0.75);
+    if (RationalKernel::orient2d(RationalKernel::point(p0), RationalKernel::point(p1), RationalKernel::point(q0)) ==
+            RationalKernel::orient2d(RationalKernel::point(p0), RationalKernel::point(p1), RationalKernel::point(q1)) ||
+        RationalKernel::orient2d(RationalKernel::point(p0), RationalKernel::point(p1), RationalKernel::point(r0)) ==
+            RationalKernel::orient2d(RationalKernel::point(p0), RationalKernel::point(p1), RationalKernel::point(r1))) {
+      continue;  // rounding made them miss each other: no proper crossing
+    }
+    const Vx u = crossing(p0, p1, q0, q1), w = crossing(p0, p1, r0, r1);
+    for (const Vx* v : {&u, &w}) {
+      const RationalPoint x = ExactKernel::exact(*v);
+      ASSERT_TRUE(mpq_class(v->lo[0]) <= x.x && x.x <= mpq_class(v->hi[0]) && mpq_class(v->lo[1]) <= x.y &&
+                  x.y <= mpq_class(v->hi[1]))
+          << "case " << i << ": the box misses the crossing";
+      tightened += v->hi[0] <= std::nextafter(std::nextafter(v->lo[0], HUGE_VAL), HUGE_VAL);
+    }
+    // Far from the first segment's scale: a point 2^300 times larger or smaller.
+    const double far = std::ldexp(1.0, (rng() & 1) ? 300 : -300);
+    // The crossing's nearest doubles and their neighbours: inside its box, for the exact stage.
+    const Point n = ExactKernel::approx(u);
+    const Vx others[] = {w,
+                         ExactKernel::vertex(p0),
+                         ExactKernel::vertex(c),
+                         ExactKernel::vertex({c.x * far, c.y}),
+                         ExactKernel::vertex(n),
+                         ExactKernel::vertex({std::nextafter(n.x, HUGE_VAL), n.y}),
+                         ExactKernel::vertex({n.x, std::nextafter(n.y, -HUGE_VAL)})};
+    for (const Vx& o : others) {
+      const Sign expected = RationalKernel::compare_vertices(ExactKernel::exact(u), ExactKernel::exact(o));
+      ASSERT_EQ(ExactKernel::compare_vertices(u, o), expected) << "case " << i;
+      ASSERT_EQ(ExactKernel::compare_vertices(o, u), -expected) << "case " << i;
+      ++compared;
+      decided_exactly += u.hi[0] >= o.lo[0] && o.hi[0] >= u.lo[0] && u.hi[1] >= o.lo[1] && o.hi[1] >= u.lo[1];
+    }
+    check(u, w, ExactKernel::vertex(p1), orientations, "nearly parallel", i);
+    check(u, ExactKernel::vertex(n), ExactKernel::vertex({c.x * far, c.y * far}), orientations, "far", i);
+  }
+  std::printf("%d boxes two ulps wide, %d comparisons, %d with overlapping boxes; orientations by the boxes %d, exactly %d\n",
+              tightened, compared, decided_exactly, orientations.by_boxes, orientations.exactly);
+  EXPECT_GT(tightened, 2000);
+  EXPECT_GT(decided_exactly, 2000);
+}
+
 }  // namespace
 }  // namespace mk
