@@ -136,18 +136,20 @@ std::vector<int> link_windings(const WindingArrangement<K>& wa) {
     // One located link per connected part: the first fragment of an edge, whose left side
     // is the point just left of the edge near its source (a ray query over each group's
     // edges). The first few queries scan the edges; from then on (many separate parts) they
-    // are bucketed.
+    // read the edges near them in x (the edges cross: no sweep).
     std::vector<std::unique_ptr<WindingLocator<K>>> locators(static_cast<std::size_t>(G));
     std::vector<char> bucketed(static_cast<std::size_t>(G), 0);
     constexpr int kDirectSeeds = 4;
     int seeds = 0;
     const auto locate = [&](int e, int g) {
-      const bool many = seeds > kDirectSeeds;
-      if (!locators[g] || (many && !bucketed[g])) {
+      if (!locators[g]) {
         const std::span<const Edge> edges(wa.edges.data() + wa.group_first_edge[g],
                                           static_cast<std::size_t>(wa.group_first_edge[g + 1] - wa.group_first_edge[g]));
-        locators[g] = std::make_unique<WindingLocator<K>>(arr, edges, many ? wa.edges.size() : 1);
-        bucketed[g] = many;
+        locators[g] = std::make_unique<WindingLocator<K>>(arr, edges, 1);
+      }
+      if (seeds > kDirectSeeds && !bucketed[g]) {
+        locators[g]->index_for_scans();
+        bucketed[g] = 1;
       }
       return locators[g]->winding(wa.edges[e].src, wa.edges[e].dst, Side::left);
     };
