@@ -14,6 +14,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/boolean_op.hpp"
@@ -27,11 +28,16 @@
 
 namespace mk {
 
-// The ends of the links grouped by vertex: ends[begin[v], begin[v + 1]) are v's, each as a
-// code, 2 l at link l's lo and 2 l + 1 at its hi.
+// The ends of the links grouped by vertex: ends[begin[v], begin[v + 1]) are v's, each with
+// its code, 2 l at link l's lo and 2 l + 1 at its hi, and the vertex at the link's other
+// end (so that walking around v reads no link).
+struct LinkEnd {
+  int code;
+  int other;
+};
 struct LinkEnds {
   std::vector<int> begin;
-  std::vector<int> ends;
+  std::vector<LinkEnd> ends;
 };
 
 inline LinkEnds link_ends_by_vertex(const std::vector<WindingLink>& links, int num_vertices) {
@@ -45,8 +51,8 @@ inline LinkEnds link_ends_by_vertex(const std::vector<WindingLink>& links, int n
   g.ends.resize(static_cast<std::size_t>(g.begin.back()));
   std::vector<int> fill(g.begin.begin(), g.begin.end() - 1);
   for (std::size_t l = 0; l < links.size(); ++l) {
-    g.ends[fill[links[l].lo]++] = 2 * static_cast<int>(l);
-    g.ends[fill[links[l].hi]++] = 2 * static_cast<int>(l) + 1;
+    g.ends[fill[links[l].lo]++] = LinkEnd{2 * static_cast<int>(l), links[l].hi};
+    g.ends[fill[links[l].hi]++] = LinkEnd{2 * static_cast<int>(l) + 1, links[l].lo};
   }
   return g;
 }
@@ -57,19 +63,18 @@ inline LinkEnds link_ends_by_vertex(const std::vector<WindingLink>& links, int n
 template <Kernel K>
 std::vector<int> link_windings(const WindingArrangement<K>& wa) {
   const Arrangement<K>& arr = wa.arr;
-  const int G = wa.groups;
   const int num_links = static_cast<int>(wa.links.size());
   // Counted apart, the groups cost a winding number each per link: refused past 2^27 numbers
   // (512 MB) rather than exhausting memory.
-  if (static_cast<double>(num_links) * G > static_cast<double>(1 << 27)) {
-    throw InvalidInput(std::to_string(G) + " inputs counted apart on " + std::to_string(num_links) +
+  if (static_cast<double>(num_links) * wa.groups > static_cast<double>(1 << 27)) {
+    throw InvalidInput(std::to_string(wa.groups) + " inputs counted apart on " + std::to_string(num_links) +
                        " links would need more than 2^27 winding numbers; give fewer inputs (intersection-all keeps one "
                        "per part)");
   }
   // Link ends grouped by vertex, each group then put in angular order.
   LinkEnds grouped = link_ends_by_vertex(wa.links, arr.num_vertices());
   const std::vector<int>& begin = grouped.begin;
-  std::vector<int>& ends = grouped.ends;
+  std::vector<LinkEnd>& ends = grouped.ends;
   const DirectionOrder<K> angles(arr.points);
   const auto dir_of = [&](int code) {
     const Direction d = wa.links[code >> 1].dir;
@@ -78,85 +83,100 @@ std::vector<int> link_windings(const WindingArrangement<K>& wa) {
   for (std::size_t v = 0; v + 1 < begin.size(); ++v) {
     if (begin[v + 1] - begin[v] < 3) continue;  // two ends: either order is the angular one
     std::sort(ends.begin() + begin[v], ends.begin() + begin[v + 1],
-              [&](int x, int y) { return angles.compare(dir_of(x), dir_of(y)) == Sign::negative; });
+              [&](const LinkEnd& x, const LinkEnd& y) { return angles.compare(dir_of(x.code), dir_of(y.code)) == Sign::negative; });
   }
 
-  std::vector<int> left(static_cast<std::size_t>(num_links) * G, 0);
-  std::vector<char> known(static_cast<std::size_t>(num_links), 0);
-  std::vector<char> done(static_cast<std::size_t>(arr.num_vertices()), 0);
-  const auto delta = [&](int l, int g) { return wa.delta[static_cast<std::size_t>(l) * G + g]; };
-  const auto fail = [&]() {
-    throw KernelFailure(std::string("kernel ") + std::string(K::name) +
-                        ": the winding numbers around a vertex do not close (inconsistent predicates)");
-  };
-  std::vector<int> stack;
-  std::vector<int> sector(static_cast<std::size_t>(G));
-  // Around v counterclockwise: crossing an end counterclockwise goes from the right of its
-  // ray (away from v) to its left, adding the ray's net count; the sector after an end at
-  // lo is its link's left side, after an end at hi its right side.
-  const auto walk_around = [&](int v) {
-    const int b = begin[v];
-    const int n = begin[v + 1] - b;
-    int i0 = 0;
-    while (i0 < n && !known[ends[b + i0] >> 1]) ++i0;
-    const auto after = [&](int code, int g) {
-      const int l = code >> 1;
-      return left[static_cast<std::size_t>(l) * G + g] - ((code & 1) != 0 ? delta(l, g) : 0);
+  std::vector<int> left(static_cast<std::size_t>(num_links) * wa.groups, 0);
+  // The walk, its group loops unrolled for one group (union-all, make-valid): kG groups, or
+  // wa.groups when kG is 0.
+  const auto walk = [&](auto fixed_groups) {
+    constexpr int kG = decltype(fixed_groups)::value;
+    const int G = kG > 0 ? kG : wa.groups;
+    std::vector<char> known(static_cast<std::size_t>(num_links), 0);
+    std::vector<char> done(static_cast<std::size_t>(arr.num_vertices()), 0);
+    const auto delta = [&](int l, int g) { return wa.delta[static_cast<std::size_t>(l) * G + g]; };
+    const auto fail = [&]() {
+      throw KernelFailure(std::string("kernel ") + std::string(K::name) +
+                          ": the winding numbers around a vertex do not close (inconsistent predicates)");
     };
-    for (int g = 0; g < G; ++g) sector[g] = after(ends[b + i0], g);
-    for (int k = 1; k <= n; ++k) {
-      const int code = ends[b + (i0 + k) % n];
-      const int l = code >> 1;
-      for (int g = 0; g < G; ++g) sector[g] += (code & 1) != 0 ? -delta(l, g) : delta(l, g);
-      if (known[l]) {
-        for (int g = 0; g < G; ++g) {
-          if (after(code, g) != sector[g]) fail();
+    std::vector<int> stack;
+    std::vector<int> sector(static_cast<std::size_t>(G));
+    // Around v counterclockwise: crossing an end counterclockwise goes from the right of its
+    // ray (away from v) to its left, adding the ray's net count; the sector after an end at
+    // lo is its link's left side, after an end at hi its right side.
+    const auto walk_around = [&](int v) {
+      const int b = begin[v];
+      const int n = begin[v + 1] - b;
+      int i0 = 0;
+      while (i0 < n && !known[ends[b + i0].code >> 1]) ++i0;
+      const auto after = [&](int code, int g) {
+        const int l = code >> 1;
+        return left[static_cast<std::size_t>(l) * G + g] - ((code & 1) != 0 ? delta(l, g) : 0);
+      };
+      for (int g = 0; g < G; ++g) sector[g] = after(ends[b + i0].code, g);
+      int i = i0;
+      for (int k = 1; k <= n; ++k) {
+        if (++i == n) i = 0;
+        const int code = ends[b + i].code;
+        const int l = code >> 1;
+        for (int g = 0; g < G; ++g) sector[g] += (code & 1) != 0 ? -delta(l, g) : delta(l, g);
+        if (known[l]) {
+          for (int g = 0; g < G; ++g) {
+            if (after(code, g) != sector[g]) fail();
+          }
+          continue;
         }
-        continue;
+        for (int g = 0; g < G; ++g) left[static_cast<std::size_t>(l) * G + g] = sector[g] + ((code & 1) != 0 ? delta(l, g) : 0);
+        known[l] = 1;
+        const int other = ends[b + i].other;
+        if (!done[other]) stack.push_back(other);
       }
-      for (int g = 0; g < G; ++g) left[static_cast<std::size_t>(l) * G + g] = sector[g] + ((code & 1) != 0 ? delta(l, g) : 0);
-      known[l] = 1;
-      const int other = (code & 1) != 0 ? wa.links[l].lo : wa.links[l].hi;
-      if (!done[other]) stack.push_back(other);
-    }
-  };
+    };
 
-  // One located link per connected part: the first fragment of an edge, whose left side is
-  // the point just left of the edge near its source (a ray query over each group's edges).
-  // The first few queries scan the edges; from then on (many separate parts) they are
-  // bucketed.
-  std::vector<std::unique_ptr<WindingLocator<K>>> locators(static_cast<std::size_t>(G));
-  std::vector<char> bucketed(static_cast<std::size_t>(G), 0);
-  constexpr int kDirectSeeds = 4;
-  int seeds = 0;
-  const auto locate = [&](int e, int g) {
-    const bool many = seeds > kDirectSeeds;
-    if (!locators[g] || (many && !bucketed[g])) {
-      const std::span<const Edge> edges(wa.edges.data() + wa.group_first_edge[g],
-                                        static_cast<std::size_t>(wa.group_first_edge[g + 1] - wa.group_first_edge[g]));
-      locators[g] = std::make_unique<WindingLocator<K>>(arr, edges, many ? wa.edges.size() : 1);
-      bucketed[g] = many;
+    // One located link per connected part: the first fragment of an edge, whose left side
+    // is the point just left of the edge near its source (a ray query over each group's
+    // edges). The first few queries scan the edges; from then on (many separate parts) they
+    // read the edges near them in x (the edges cross: no sweep).
+    std::vector<std::unique_ptr<WindingLocator<K>>> locators(static_cast<std::size_t>(G));
+    std::vector<char> bucketed(static_cast<std::size_t>(G), 0);
+    constexpr int kDirectSeeds = 4;
+    int seeds = 0;
+    const auto locate = [&](int e, int g) {
+      if (!locators[g]) {
+        const std::span<const Edge> edges(wa.edges.data() + wa.group_first_edge[g],
+                                          static_cast<std::size_t>(wa.group_first_edge[g + 1] - wa.group_first_edge[g]));
+        locators[g] = std::make_unique<WindingLocator<K>>(arr, edges, 1);
+      }
+      if (seeds > kDirectSeeds && !bucketed[g]) {
+        locators[g]->index_for_scans();
+        bucketed[g] = 1;
+      }
+      return locators[g]->winding(wa.edges[e].src, wa.edges[e].dst, Side::left);
+    };
+    for (int e = 0; e < static_cast<int>(wa.edges.size()); ++e) {
+      const int l = wa.edge_first_link[e];
+      if (known[l]) continue;
+      ++seeds;
+      for (int g = 0; g < G; ++g) {
+        const bool empty = wa.group_first_edge[g] == wa.group_first_edge[g + 1];
+        const int w = empty ? 0 : locate(e, g);
+        left[static_cast<std::size_t>(l) * G + g] = wa.edge_first_forward[e] ? w : w + delta(l, g);
+      }
+      known[l] = 1;
+      stack.assign({wa.links[l].lo, wa.links[l].hi});
+      while (!stack.empty()) {
+        const int v = stack.back();
+        stack.pop_back();
+        if (done[v]) continue;
+        done[v] = 1;
+        walk_around(v);
+      }
     }
-    return locators[g]->winding(wa.edges[e].src, wa.edges[e].dst, Side::left);
   };
-  for (int e = 0; e < static_cast<int>(wa.edges.size()); ++e) {
-    const int l = wa.edge_first_link[e];
-    if (known[l]) continue;
-    ++seeds;
-    for (int g = 0; g < G; ++g) {
-      const bool empty = wa.group_first_edge[g] == wa.group_first_edge[g + 1];
-      const int w = empty ? 0 : locate(e, g);
-      left[static_cast<std::size_t>(l) * G + g] = wa.edge_first_forward[e] ? w : w + delta(l, g);
-    }
-    known[l] = 1;
-    stack.assign({wa.links[l].lo, wa.links[l].hi});
-    while (!stack.empty()) {
-      const int v = stack.back();
-      stack.pop_back();
-      if (done[v]) continue;
-      done[v] = 1;
-      walk_around(v);
-    }
+  if (wa.groups == 1) {
+    walk(std::integral_constant<int, 1>());
+  } else {
+    walk(std::integral_constant<int, 0>());
   }
   return left;
 }
@@ -214,7 +234,7 @@ BooleanResult<K> fill_op(WindingArrangement<K>&& wa, InResult&& in_result, const
       sides.resize(static_cast<std::size_t>(e - b) * G);
       faces.clear();
       for (int i = b; i < e; ++i) {
-        const std::size_t l = static_cast<std::size_t>(around.ends[i] >> 1);
+        const std::size_t l = static_cast<std::size_t>(around.ends[i].code >> 1);
         int* wr = sides.data() + static_cast<std::size_t>(i - b) * G;
         right_of(l, wr);
         faces.push_back(left.data() + l * G);

@@ -1,13 +1,17 @@
 // Winding numbers of a set of non-crossing edges at points just beside an edge: one query by
-// a scan of the edges, many queries in one plane sweep. [MK89 §4.3] (locating one vertex per
-// ring without a scan of the other polygon) [MK89 §3.2] (point location by a ray)
+// a scan of the edges (of those near it in x, once indexed), many queries in one plane
+// sweep. [MK89 §4.3] (locating one vertex per ring without a scan of the other polygon)
+// [MK89 §3.2] (point location by a ray)
 // Preconditions: point ids follow lexicographic order; x_rank[id] is the rank of the point's
-// x among the distinct x values; the edges meet only at shared endpoints or coincide as sets
-// (the edges of one vertex-complete polygon).
+// x among the distinct x values; for the sweep, the edges meet only at shared endpoints or
+// coincide as sets (the edges of one vertex-complete polygon); single queries take any edges.
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
+#include <cstdlib>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/arrangement.hpp"
@@ -139,6 +143,45 @@ class WindingLocator {
     (void)queries;
   }
 
+  // Makes the single queries below read only the edges whose x-range may hold the query's
+  // x: the edges in buckets of x-ranks, an edge spanning more than kSpan buckets in a list
+  // read by every query (so no edge is held more than kSpan times, and no query reads more
+  // than a full scan would). For callers with many single queries over edges that cross, which
+  // the sweep of windings() cannot take (the fill operations' rings); the answers are those
+  // of the full scan, summed over the same edges.
+  void index_for_scans() {
+    const std::size_t m = edges_.size();
+    ranks_ = arr_.x_rank.empty() ? 1 : static_cast<std::size_t>(arr_.x_rank.back()) + 1;
+    // Buckets as wide as an edge on average: most edges in one or two.
+    std::size_t spans = 0;
+    for (const Edge& e : edges_) spans += static_cast<std::size_t>(std::abs(arr_.x_rank[e.src] - arr_.x_rank[e.dst]));
+    const std::size_t width = std::max<std::size_t>(1, spans / std::max<std::size_t>(1, m));
+    buckets_ = std::clamp<std::size_t>(ranks_ / width, 1, std::max<std::size_t>(1, m));
+    bucket_begin_.assign(buckets_ + 1, 0);
+    long_edges_.clear();
+    const auto span_of = [&](const Edge& e) {
+      const auto [ra, rb] = std::minmax(arr_.x_rank[e.src], arr_.x_rank[e.dst]);
+      return std::pair(bucket_of(ra), bucket_of(rb));
+    };
+    for (const Edge& e : edges_) {
+      const auto [b0, b1] = span_of(e);
+      if (b1 - b0 >= kSpan) continue;
+      for (std::size_t b = b0; b <= b1; ++b) ++bucket_begin_[b + 1];
+    }
+    for (std::size_t b = 1; b <= buckets_; ++b) bucket_begin_[b] += bucket_begin_[b - 1];
+    bucket_edges_.resize(bucket_begin_.back());
+    std::vector<std::size_t> fill(bucket_begin_.begin(), bucket_begin_.end() - 1);
+    for (std::size_t i = 0; i < m; ++i) {
+      const auto [b0, b1] = span_of(edges_[i]);
+      if (b1 - b0 >= kSpan) {
+        long_edges_.push_back(static_cast<int>(i));
+        continue;
+      }
+      for (std::size_t b = b0; b <= b1; ++b) bucket_edges_[fill[b]++] = static_cast<int>(i);
+    }
+    indexed_ = true;
+  }
+
   // Winding number at the point just `side` of v -> t near v: a scan of every edge.
   int winding(int v, int t, Side side) const {
     int wind = 0;
@@ -172,13 +215,23 @@ class WindingLocator {
   template <class F>
   void scan(int v, int t, Side side, F&& f) const {
     const int r = arr_.x_rank[v];
-    for (const Edge& edge : edges_) {
+    const auto visit = [&](const Edge& edge) {
       const int ra = arr_.x_rank[edge.src];
       const int rb = arr_.x_rank[edge.dst];
-      if (r < std::min(ra, rb) || r > std::max(ra, rb)) continue;
+      if (r < std::min(ra, rb) || r > std::max(ra, rb)) return;
       f(vertical_ray_crossing<K>(arr_.points[v], arr_.points[t], side, arr_.points[edge.src], arr_.points[edge.dst]));
+    };
+    if (!indexed_) {
+      for (const Edge& edge : edges_) visit(edge);
+      return;
     }
+    const std::size_t b = bucket_of(r);
+    for (std::size_t i = bucket_begin_[b]; i < bucket_begin_[b + 1]; ++i) visit(edges_[bucket_edges_[i]]);
+    for (const int e : long_edges_) visit(edges_[e]);
   }
+
+  static constexpr std::size_t kSpan = 8;  // buckets an edge may be held in (index_for_scans)
+  std::size_t bucket_of(int rank) const { return static_cast<std::size_t>(rank) * buckets_ / ranks_; }
 
   std::vector<int> answer(std::span<const LocatorQuery> queries, bool parity) const {
     std::vector<int> out(queries.size(), 0);
@@ -288,6 +341,12 @@ class WindingLocator {
 
   const Arrangement<K>& arr_;
   std::span<const Edge> edges_;
+  // index_for_scans: bucket b holds bucket_edges_[bucket_begin_[b], bucket_begin_[b + 1]).
+  bool indexed_ = false;
+  std::size_t ranks_ = 1, buckets_ = 1;
+  std::vector<std::size_t> bucket_begin_;
+  std::vector<int> bucket_edges_;
+  std::vector<int> long_edges_;
 };
 
 }  // namespace mk

@@ -11,6 +11,7 @@
 #include <span>
 #include <cstdint>
 #include <numeric>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -64,6 +65,7 @@ struct Chain {
   int y_min = 0;  // point ids of the lowest and highest ends
   int y_max = 0;
   int group = 0;
+  bool falling = false;  // the chain descends in y from lo to hi
 };
 
 inline constexpr int kMaxChain = 256;
@@ -90,6 +92,7 @@ class CandidatePairs {
       : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite), search_(search) {
     if (search_ == PairSearch::sweep) {
       build_chains();
+      build_boxes();
       plan();
     }
   }
@@ -132,6 +135,47 @@ class CandidatePairs {
 
   int xr(int id) const { return x_rank_[id]; }
   bool y_less(int u, int w) const { return K::compare_y(pts_[u], pts_[w]) == Sign::negative; }
+
+  // A y to compare: with double points (compared by <) the double itself, read once into the
+  // boxes below, so that pairing boxes and segments reads no point again (those reads were
+  // most of the search's cost on many rings); with other points the point id.
+  static constexpr bool kPlainY = std::is_same_v<typename K::Point, mk::Point>;
+  using YKey = std::conditional_t<kPlainY, double, int>;
+  YKey ykey(int id) const {
+    if constexpr (kPlainY) {
+      return pts_[id].y;
+    } else {
+      return id;
+    }
+  }
+  bool ky_less(YKey u, YKey w) const {
+    if constexpr (kPlainY) {
+      return u < w;
+    } else {
+      return y_less(u, w);
+    }
+  }
+  // A chain's box: x-ranks of its ends, its lowest and highest y.
+  struct Box {
+    int x0, x1;
+    YKey y0, y1;
+  };
+  // A segment in `order_`: its item, the x-ranks and the y of its lo and hi ends.
+  struct Seg {
+    int item, x_lo, x_hi;
+    YKey y_lo, y_hi;
+  };
+
+  // The boxes of the chains and the segments in chain order, read by the search.
+  void build_boxes() {
+    boxes_.reserve(chains_.size());
+    for (const detail::Chain& c : chains_) boxes_.push_back({xr(c.lo), xr(c.hi), ykey(c.y_min), ykey(c.y_max)});
+    segs_.reserve(order_.size());
+    for (const int k : order_) {
+      const SweepItem& it = items_[k];
+      segs_.push_back({k, xr(it.lo), xr(it.hi), ykey(it.lo), ykey(it.hi)});
+    }
+  }
   // The way a segment goes (see detail::Chain): along the ring, in y, vertical or not.
   int course(const SweepItem& it) const {
     const Sign s = K::compare_y(pts_[it.lo], pts_[it.hi]);
@@ -156,7 +200,8 @@ class CandidatePairs {
       c.lo = items_[order_[start]].lo;
       c.hi = items_[order_[end - 1]].hi;
       // Monotone in y: the extreme ends are the chain's two ends.
-      c.y_min = y_less(c.hi, c.lo) ? c.hi : c.lo;
+      c.falling = y_less(c.hi, c.lo);
+      c.y_min = c.falling ? c.hi : c.lo;
       c.y_max = c.y_min == c.lo ? c.hi : c.lo;
       chains_.push_back(c);
     };
@@ -246,14 +291,15 @@ class CandidatePairs {
   // pivot lies below it, one starting there and going on crosses it. Grid-aligned boxes
   // then rarely cross the line (a closed pivot line would cross every box touching it).
   Place place(int chain, int axis, int pivot) const {
-    const detail::Chain& c = chains_[chain];
+    const Box& c = boxes_[chain];
     if (axis == 0) {
-      if (xr(c.hi) <= pivot) return Place::below;
-      if (xr(c.lo) > pivot) return Place::above;
+      if (c.x1 <= pivot) return Place::below;
+      if (c.x0 > pivot) return Place::above;
       return Place::across;
     }
-    if (!y_less(pivot, c.y_max)) return Place::below;
-    if (y_less(pivot, c.y_min)) return Place::above;
+    const YKey p = ykey(pivot);
+    if (!ky_less(p, c.y1)) return Place::below;
+    if (ky_less(p, c.y0)) return Place::above;
     return Place::across;
   }
   // Reorders s as [below | above | across] the pivot; returns the ends of the first two.
@@ -267,36 +313,29 @@ class CandidatePairs {
   }
 
   // The bounding box of a set of chains: x-ranks and point ids of the lowest and highest y.
-  struct Bounds {
-    int x0, x1, y0, y1;
-  };
-  Bounds bounds(std::span<const int> s) const {
-    const detail::Chain& c0 = chains_[s[0]];
-    Bounds b{xr(c0.lo), xr(c0.hi), c0.y_min, c0.y_max};
+  Box bounds(std::span<const int> s) const {
+    Box b = boxes_[s[0]];
     for (const int i : s.subspan(1)) {
-      const detail::Chain& c = chains_[i];
-      b.x0 = std::min(b.x0, xr(c.lo));
-      b.x1 = std::max(b.x1, xr(c.hi));
-      if (y_less(c.y_min, b.y0)) b.y0 = c.y_min;
-      if (y_less(b.y1, c.y_max)) b.y1 = c.y_max;
+      const Box& c = boxes_[i];
+      b.x0 = std::min(b.x0, c.x0);
+      b.x1 = std::max(b.x1, c.x1);
+      if (ky_less(c.y0, b.y0)) b.y0 = c.y0;
+      if (ky_less(b.y1, c.y1)) b.y1 = c.y1;
     }
     return b;
   }
   // Moves the chains of s whose boxes meet `b` to its front; returns how many.
-  std::size_t keep_meeting(std::span<int> s, const Bounds& b) const {
-    const auto e = std::partition(s.begin(), s.end(), [&](int i) {
-      const detail::Chain& c = chains_[i];
-      return xr(c.lo) <= b.x1 && b.x0 <= xr(c.hi) && !y_less(c.y_max, b.y0) && !y_less(b.y1, c.y_min);
-    });
+  std::size_t keep_meeting(std::span<int> s, const Box& b) const {
+    const auto e = std::partition(s.begin(), s.end(), [&](int i) { return boxes_meet(boxes_[i], b); });
     return static_cast<std::size_t>(e - s.begin());
   }
 
-  bool boxes_meet(const detail::Chain& c, const detail::Chain& d) const {
-    return xr(c.lo) <= xr(d.hi) && xr(d.lo) <= xr(c.hi) && !y_less(d.y_max, c.y_min) && !y_less(c.y_max, d.y_min);
+  bool boxes_meet(const Box& c, const Box& d) const {
+    return c.x0 <= d.x1 && d.x0 <= c.x1 && !ky_less(d.y1, c.y0) && !ky_less(c.y1, d.y0);
   }
   template <class F>
   void pair_if_meet(int c, int d, F& f) const {
-    if (boxes_meet(chains_[c], chains_[d])) merge(chains_[c], chains_[d], f);
+    if (boxes_meet(boxes_[c], boxes_[d])) merge(c, d, f);
   }
 
   // Pairs within one set.
@@ -373,55 +412,58 @@ class CandidatePairs {
   // The segments of chain x that can meet chain `other`: a chain is monotone in x and in y,
   // so those ending left of other's start, and those entirely below or above other's
   // y-range, form a prefix and a suffix of x's segments (in x order), found by binary search.
-  std::pair<int, int> window(const detail::Chain& x, const detail::Chain& other) const {
-    const auto first = order_.begin() + x.first;
-    const auto last = order_.begin() + x.last;
-    auto b = std::partition_point(first, last, [&](int k) { return xr(items_[k].hi) < xr(other.lo); });
-    auto e = std::partition_point(b, last, [&](int k) { return xr(items_[k].lo) <= xr(other.hi); });
-    if (y_less(x.hi, x.lo)) {  // descending in y: a segment spans y(hi) .. y(lo)
-      b = std::partition_point(b, e, [&](int k) { return y_less(other.y_max, items_[k].hi); });
-      e = std::partition_point(b, e, [&](int k) { return !y_less(items_[k].lo, other.y_min); });
+  std::pair<int, int> window(int xc, int oc) const {
+    const detail::Chain& x = chains_[xc];
+    const Box& other = boxes_[oc];
+    const Seg* const first = segs_.data() + x.first;
+    const Seg* const last = segs_.data() + x.last;
+    const Seg* b = std::partition_point(first, last, [&](const Seg& k) { return k.x_hi < other.x0; });
+    const Seg* e = std::partition_point(b, last, [&](const Seg& k) { return k.x_lo <= other.x1; });
+    if (x.falling) {  // descending in y: a segment spans y(hi) .. y(lo)
+      b = std::partition_point(b, e, [&](const Seg& k) { return ky_less(other.y1, k.y_hi); });
+      e = std::partition_point(b, e, [&](const Seg& k) { return !ky_less(k.y_lo, other.y0); });
     } else {  // ascending (or level): a segment spans y(lo) .. y(hi)
-      b = std::partition_point(b, e, [&](int k) { return y_less(items_[k].hi, other.y_min); });
-      e = std::partition_point(b, e, [&](int k) { return !y_less(other.y_max, items_[k].lo); });
+      b = std::partition_point(b, e, [&](const Seg& k) { return ky_less(k.y_hi, other.y0); });
+      e = std::partition_point(b, e, [&](const Seg& k) { return !ky_less(other.y1, k.y_lo); });
     }
-    return {static_cast<int>(b - order_.begin()), static_cast<int>(e - order_.begin())};
+    return {static_cast<int>(b - segs_.data()), static_cast<int>(e - segs_.data())};
   }
 
-  bool y_overlap(const SweepItem& a, const SweepItem& b) const {
-    const bool a_up = K::compare_y(pts_[a.lo], pts_[a.hi]) != Sign::positive;
-    const bool b_up = K::compare_y(pts_[b.lo], pts_[b.hi]) != Sign::positive;
-    const int a_min = a_up ? a.lo : a.hi;
-    const int a_max = a_up ? a.hi : a.lo;
-    const int b_min = b_up ? b.lo : b.hi;
-    const int b_max = b_up ? b.hi : b.lo;
-    return !y_less(b_max, a_min) && !y_less(a_max, b_min);
+  bool y_overlap(const Seg& a, const Seg& b) const {
+    const bool a_up = !ky_less(a.y_hi, a.y_lo);
+    const bool b_up = !ky_less(b.y_hi, b.y_lo);
+    const YKey a_min = a_up ? a.y_lo : a.y_hi;
+    const YKey a_max = a_up ? a.y_hi : a.y_lo;
+    const YKey b_min = b_up ? b.y_lo : b.y_hi;
+    const YKey b_max = b_up ? b.y_hi : b.y_lo;
+    return !ky_less(b_max, a_min) && !ky_less(a_max, b_min);
   }
 
-  // Segment pairs of two chains whose boxes overlap, by merging them in x: c is in the tree,
-  // d is entering it.
+  // Segment pairs of chains c and d whose boxes overlap, by merging them in x.
   template <class F>
-  void merge(const detail::Chain& c, const detail::Chain& d, F& f) const {
+  void merge(int cc, int dc, F& f) const {
+    const detail::Chain& c = chains_[cc];
+    const detail::Chain& d = chains_[dc];
     if (c.last - c.first == 1 && d.last - d.first == 1) {  // two segments: their boxes meet
-      f(order_[c.first], order_[d.first]);
+      f(segs_[c.first].item, segs_[d.first].item);
       return;
     }
-    auto [i, c_end] = window(c, d);
-    auto [j, d_end] = window(d, c);
+    auto [i, c_end] = window(cc, dc);
+    auto [j, d_end] = window(dc, cc);
     while (i < c_end && j < d_end) {
-      const SweepItem& a = items_[order_[i]];
-      const SweepItem& b = items_[order_[j]];
-      if (xr(a.hi) < xr(b.lo)) {
+      const Seg& a = segs_[i];
+      const Seg& b = segs_[j];
+      if (a.x_hi < b.x_lo) {
         ++i;
         continue;
       }
-      if (xr(b.hi) < xr(a.lo)) {
+      if (b.x_hi < a.x_lo) {
         ++j;
         continue;
       }
       // a overlaps b in x: so may a the segments after b that start before a ends.
-      for (int k = j; k < d_end && xr(items_[order_[k]].lo) <= xr(a.hi); ++k) {
-        if (y_overlap(a, items_[order_[k]])) f(order_[i], order_[k]);
+      for (int k = j; k < d_end && segs_[k].x_lo <= a.x_hi; ++k) {
+        if (y_overlap(a, segs_[k])) f(a.item, segs_[k].item);
       }
       ++i;
     }
@@ -434,6 +476,8 @@ class CandidatePairs {
   PairSearch search_;
   std::vector<int> order_;
   std::vector<detail::Chain> chains_;
+  std::vector<Box> boxes_;  // per chain
+  std::vector<Seg> segs_;   // per position in order_
   mutable std::vector<Task> tasks_;
 };
 
