@@ -138,7 +138,8 @@ class CandidatePairs {
 
   // A y to compare: with double points (compared by <) the double itself, read once into the
   // boxes below, so that pairing boxes and segments reads no point again (those reads were
-  // most of the search's cost on many rings); with other points the point id.
+  // most of the search's cost on many rings); with other points the point id. Such kernels'
+  // compare_y must be the doubles' `<` (tests/core/plain_y_test.cpp checks each).
   static constexpr bool kPlainY = std::is_same_v<typename K::Point, mk::Point>;
   using YKey = std::conditional_t<kPlainY, double, int>;
   YKey ykey(int id) const {
