@@ -217,14 +217,7 @@ BooleanOutput run_parts_case(const InputJson& line, PartsOperation op, const Boo
   } catch (const InvalidInput& e) {
     throw CaseError{std::string(key) + (key[0] == 'p' ? "" : ": ") + e.what()};
   }
-  switch (op) {
-    case PartsOperation::union_all: return union_all(parts, o);
-    case PartsOperation::intersection_all:
-      if (parts.empty()) throw CaseError{std::string(key) + ": intersection-all needs at least one polygon"};
-      return intersection_all(parts, o);
-    case PartsOperation::make_valid: return make_valid(parts, o);
-  }
-  throw CaseError{"unknown operation"};
+  return compute_parts(op, parts, o, key);  // its InvalidInput becomes the line's error
 }
 
 // The output line's results.

@@ -5,6 +5,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include "api/mkbool.hpp"
@@ -139,6 +141,27 @@ void run_command(const CommandOptions& o) {
   throw_if_written_invalid(result, o.format);
 }
 
+const char* parts_operation_name(PartsOperation op) {
+  switch (op) {
+    case PartsOperation::union_all: return "union-all";
+    case PartsOperation::intersection_all: return "intersection-all";
+    case PartsOperation::make_valid: return "make-valid";
+  }
+  return "?";
+}
+
+BooleanOutput compute_parts(PartsOperation op, const MultiPolygon& parts, const BooleanOptions& options,
+                            const std::string& input_name) {
+  switch (op) {
+    case PartsOperation::union_all: return union_all(parts, options);
+    case PartsOperation::intersection_all:
+      if (parts.empty()) throw InvalidInput(input_name + ": intersection-all needs at least one polygon");
+      return intersection_all(parts, options);
+    case PartsOperation::make_valid: return make_valid(parts, options);
+  }
+  throw std::logic_error("unknown parts operation");
+}
+
 void run_parts_command(const PartsCommandOptions& o) {
   const PartsInput in = read_parts(o.input, "INPUT");
   BooleanOptions options;
@@ -151,20 +174,8 @@ void run_parts_command(const PartsCommandOptions& o) {
   options.rounding = o.rounding;
   options.grid = o.grid;
   PredicateCounters::reset();
-  BooleanOutput result;
-  const char* what = "union-all";
-  switch (o.op) {
-    case PartsOperation::union_all: result = union_all(in.parts, options); break;
-    case PartsOperation::intersection_all:
-      what = "intersection-all";
-      if (in.parts.empty()) throw InvalidInput(in.name + ": intersection-all needs at least one polygon");
-      result = intersection_all(in.parts, options);
-      break;
-    case PartsOperation::make_valid:
-      what = "make-valid";
-      result = make_valid(in.parts, options);
-      break;
-  }
+  const BooleanOutput result = compute_parts(o.op, in.parts, options, in.name);
+  const char* what = parts_operation_name(o.op);
   const PredicateCounters counters = PredicateCounters::read();
   const int stats_lost = o.stats ? print_stats(result, counters) : 0;
   const Polygon drawn = fill_rule_polygon(in.parts, o.fill_rule.value_or(FillRule::evenodd));

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "api/mkbool.hpp"
 #include "core/fill_rule.hpp"
 #include "core/output.hpp"
 #include "core/polygon.hpp"
@@ -53,6 +54,14 @@ struct PartsCommandOptions {
   RoundingMode rounding = RoundingMode::certified;  // see mk::BooleanOptions
   std::string grid;
 };
+
+// The operation's name as the command spells it ("union-all", ...).
+const char* parts_operation_name(PartsOperation op);
+
+// The N-ary operation on the parts (the command's and batch's one path); an intersection-all
+// of no parts is invalid input, named by input_name.
+BooleanOutput compute_parts(PartsOperation op, const MultiPolygon& parts, const BooleanOptions& options,
+                            const std::string& input_name);
 
 void run_parts_command(const PartsCommandOptions& options);
 
