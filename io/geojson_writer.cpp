@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "io/collection.hpp"
 #include "io/geojson.hpp"
 #include "io/ring_rules.hpp"
 #include "io/text_util.hpp"
@@ -79,29 +80,20 @@ std::string write_geojson(const Output& output) {
     return write_geojson(output.polygons);
   }
   std::string out = R"({"type":"GeometryCollection","geometries":[)";
-  bool first = true;
-  const auto separate = [&] {
-    if (!first) out.push_back(',');
-    first = false;
-  };
-  if (!output.polygons.empty()) {
-    separate();
-    append_polygons(out, output.polygons);
-  }
-  for (const auto& [a, b] : output.dangling_edges) {
-    separate();
-    out += R"({"type":"LineString","coordinates":[)";
-    append_position(out, a);
-    out.push_back(',');
-    append_position(out, b);
-    out += "]}";
-  }
-  for (const Point& p : output.isolated_points) {
-    separate();
-    out += R"({"type":"Point","coordinates":)";
-    append_position(out, p);
-    out.push_back('}');
-  }
+  io_detail::for_each_member(
+      output, [&] { out.push_back(','); }, [&](const MultiPolygon& polygons) { append_polygons(out, polygons); },
+      [&](const Point& a, const Point& b) {
+        out += R"({"type":"LineString","coordinates":[)";
+        append_position(out, a);
+        out.push_back(',');
+        append_position(out, b);
+        out += "]}";
+      },
+      [&](const Point& p) {
+        out += R"({"type":"Point","coordinates":)";
+        append_position(out, p);
+        out.push_back('}');
+      });
   out += "]}";
   return out;
 }

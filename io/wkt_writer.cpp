@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "io/collection.hpp"
 #include "io/ring_rules.hpp"
 #include "io/text_util.hpp"
 #include "io/wkt.hpp"
@@ -150,29 +151,20 @@ std::string write_wkt(const Output& output, unsigned threads) {
   }
   WktText out(threads);
   out.literal("GEOMETRYCOLLECTION (");
-  bool first = true;
-  const auto separate = [&] {
-    if (!first) out.literal(", ");
-    first = false;
-  };
-  if (!output.polygons.empty()) {
-    separate();
-    append_polygons(out, output.polygons);
-  }
-  for (const auto& [a, b] : output.dangling_edges) {
-    separate();
-    out.literal("LINESTRING (");
-    out.point(a);
-    out.literal(", ");
-    out.point(b);
-    out.literal(")");
-  }
-  for (const Point& p : output.isolated_points) {
-    separate();
-    out.literal("POINT (");
-    out.point(p);
-    out.literal(")");
-  }
+  io_detail::for_each_member(
+      output, [&] { out.literal(", "); }, [&](const MultiPolygon& polygons) { append_polygons(out, polygons); },
+      [&](const Point& a, const Point& b) {
+        out.literal("LINESTRING (");
+        out.point(a);
+        out.literal(", ");
+        out.point(b);
+        out.literal(")");
+      },
+      [&](const Point& p) {
+        out.literal("POINT (");
+        out.point(p);
+        out.literal(")");
+      });
   out.literal(")");
   return out.str();
 }
