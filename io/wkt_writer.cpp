@@ -3,6 +3,7 @@
 // Preconditions: finite coordinates; the result is bounded (checked, throws otherwise).
 // Large outputs are formatted on several threads, byte for byte as on one.
 #include <algorithm>
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -56,25 +57,55 @@ class WktText {
   }
 
   std::string str() {
-    std::size_t points = 0;
-    for (const Piece& p : pieces_) points += p.ring ? p.to - p.from : 0;
-    const unsigned threads = points >= kParallelPoints ? threads_ : 1;
-    if (threads > 1) run_tasks(threads, pieces_.size(), [&](std::size_t i) { format(pieces_[i]); });
+    std::size_t points = 0, literal_bytes = 0;
+    for (const Piece& p : pieces_) points += p.ring ? p.to - p.from : 0, literal_bytes += p.text.size();
     std::string out;
-    if (threads > 1) {
-      std::size_t size = 0;
-      for (const Piece& p : pieces_) size += p.text.size();
-      out.reserve(size + 1);  // and the final newline the command adds
-    } else {
-      out.reserve(points * 40);  // two shortest doubles and ", " take up to 45 bytes, often 38
+    // Room for the longest text (a point is at most two 24-byte doubles, a space and ", "),
+    // and the final newline the command adds: never a reallocation, and the pages never
+    // written are never touched.
+    out.reserve(literal_bytes + points * 51 + 1);
+    if (points < kParallelPoints || threads_ <= 1) {
+      for (const Piece& p : pieces_) append(out, p);
+      return out;
     }
-    for (Piece& p : pieces_) {
-      if (threads > 1 || !p.ring) {
-        out += p.text;
-      } else {
-        append_run(out, p);
+    // Groups of consecutive pieces of about kRun points (a literal counts as one), formatted
+    // a wave of groups at a time on the threads into buffers reused two waves later (fresh
+    // pages cost more than formatting into them); one task of each wave appends the previous
+    // wave's buffers to the text, in order, while the others format.
+    std::vector<std::size_t> group_end;
+    for (std::size_t i = 0, weight = 0; i < pieces_.size(); ++i) {
+      weight += pieces_[i].ring ? pieces_[i].to - pieces_[i].from : 1;
+      if (weight >= kRun || i + 1 == pieces_.size()) {
+        group_end.push_back(i + 1);
+        weight = 0;
       }
     }
+    const std::size_t wave = 4 * static_cast<std::size_t>(threads_);
+    std::array<std::vector<std::string>, 2> buffers{std::vector<std::string>(wave), std::vector<std::string>(wave)};
+    std::size_t pending = 0;  // buffers of the previous wave not yet appended
+    const auto append_previous = [&](std::size_t w) {
+      for (std::size_t j = 0; j < pending; ++j) out += buffers[(w + 1) % 2][j];
+    };
+    std::size_t w = 0;
+    for (std::size_t first = 0; first < group_end.size(); first += wave, ++w) {
+      const std::size_t count = std::min(wave, group_end.size() - first);
+      std::vector<std::string>& mine = buffers[w % 2];
+      run_tasks(threads_, count + 1, [&](std::size_t task) {
+        if (task == 0) {
+          append_previous(w);
+          return;
+        }
+        const std::size_t j = task - 1, g = first + j;
+        // A local string: mine[j] and mine[j + 1] share a cache line, and appending to both
+        // from two threads made each append wait for the other thread's.
+        std::string buffer = std::move(mine[j]);
+        buffer.clear();
+        for (std::size_t i = g == 0 ? 0 : group_end[g - 1]; i < group_end[g]; ++i) append(buffer, pieces_[i]);
+        mine[j] = std::move(buffer);
+      });
+      pending = count;
+    }
+    append_previous(w);
     return out;
   }
 
@@ -97,10 +128,12 @@ class WktText {
       append_point(out, ring[p.reverse ? (n - k) % n : k]);
     }
   }
-  static void format(Piece& p) {
-    if (!p.ring) return;
-    p.text.reserve((p.to - p.from) * 40);
-    append_run(p.text, p);
+  static void append(std::string& out, const Piece& p) {
+    if (p.ring) {
+      append_run(out, p);
+    } else {
+      out += p.text;
+    }
   }
 
   unsigned threads_;
