@@ -4,9 +4,14 @@
 // Large outputs are formatted on several threads, byte for byte as on one.
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -20,6 +25,21 @@ namespace mk {
 namespace {
 
 using io_detail::append_double;
+
+// Asks the kernel to back a large text's buffer with huge pages where it does so on request
+// (Linux's transparent huge pages in "madvise" mode): writing 35 MB faulted in 4 KiB pages
+// one by one took about a fifth of writing blob 1e6. Only a hint: nothing changes if refused.
+void advise_huge_pages(std::string& text) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t huge = std::uintptr_t{1} << 21;
+  if (text.capacity() < 4 * huge) return;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(text.data()) + huge - 1) & ~(huge - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(text.data()) + text.capacity()) & ~(huge - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)text;
+#endif
+}
 
 void append_point(std::string& out, const Point& p) {
   append_double(out, p.x);
@@ -64,6 +84,7 @@ class WktText {
     // and the final newline the command adds: never a reallocation, and the pages never
     // written are never touched.
     out.reserve(literal_bytes + points * 51 + 1);
+    advise_huge_pages(out);
     if (points < kParallelPoints || threads_ <= 1) {
       for (const Piece& p : pieces_) append(out, p);
       return out;
