@@ -148,5 +148,49 @@ TEST(ioWktWriter, ThreadsWriteTheSameBytes) {
   EXPECT_EQ(write_wkt(out.polygons, 2), write_wkt(out.polygons, 1));
 }
 
+// Many groups of pieces (more than one wave of them on every thread count here): 40,000
+// small polygons with holes between two rings of 150,000 points, each group formatted apart
+// and joined in order; the text is the one written point by point here.
+TEST(ioWktWriter, ThreadsWriteTheSameBytesOverManyWaves) {
+  const auto text = [](double v) {
+    char buf[32];
+    if (v == 0) v = 0;
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+  };
+  const auto ring_text = [&](const Ring& r) {  // closed, as given (already in the written direction)
+    std::string s = "(";
+    for (std::size_t i = 0; i <= r.size(); ++i) {
+      const Point& p = r[i % r.size()];
+      s += (i ? ", " : "") + text(p.x) + " " + text(p.y);
+    }
+    return s + ")";
+  };
+  const auto big_ring = [](double cx) {  // counterclockwise
+    Ring r;
+    const std::size_t n = 150'000;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = 2 * 3.141592653589793 * static_cast<double>(i) / static_cast<double>(n);
+      r.push_back({cx + 1000 * std::cos(t), 1000 * std::sin(t) + 1e-9 * static_cast<double>(i % 5)});
+    }
+    return r;
+  };
+  MultiPolygon polygons;
+  polygons.push_back({big_ring(0), {}});
+  for (int i = 0; i < 40'000; ++i) {
+    const double x = 5000 + 0.1 * i, y = 0.3 + 1e-3 * (i % 11);
+    polygons.push_back({{{x, 0}, {x + 0.05, 0}, {x + 0.05, 1}, {x, 1}}, {}});
+    if (i % 3 == 0) polygons.back().holes.push_back({{x + 0.01, y}, {x + 0.01, y + 0.1}, {x + 0.02, y + 0.1}, {x + 0.02, y}});
+  }
+  polygons.push_back({big_ring(9000), {}});
+  std::string expected = "MULTIPOLYGON (";
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    expected += (k ? ", (" : "(") + ring_text(polygons[k].shell);
+    for (const Ring& h : polygons[k].holes) expected += ", " + ring_text(h);
+    expected += ")";
+  }
+  expected += ")";
+  for (const unsigned threads : {1u, 2u, 3u, 5u}) EXPECT_EQ(write_wkt(polygons, threads), expected) << threads << " threads";
+}
+
 }  // namespace
 }  // namespace mk
