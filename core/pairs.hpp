@@ -58,7 +58,7 @@ namespace detail {
 // are short, so that a chain's box stays close to its segments (the box of an L of two
 // sides of a large square would overlap every smaller square inside it).
 struct Chain {
-  int first = 0;  // range of `order` (items sorted by lo along the chain)
+  int first = 0;  // range of segs_ (the chain's segments sorted by lo)
   int last = 0;
   int lo = 0;  // leftmost and rightmost point ids
   int hi = 0;
@@ -92,7 +92,6 @@ class CandidatePairs {
       : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite), search_(search) {
     if (search_ == PairSearch::sweep) {
       build_chains();
-      build_boxes();
       plan();
     }
   }
@@ -161,34 +160,24 @@ class CandidatePairs {
     int x0, x1;
     YKey y0, y1;
   };
-  // A segment in `order_`: its item, the x-ranks and the y of its lo and hi ends.
+  // A segment in chain order: its item, the x-ranks and the y of its lo and hi ends.
   struct Seg {
     int item, x_lo, x_hi;
     YKey y_lo, y_hi;
   };
 
-  // The boxes of the chains and the segments in chain order, read by the search.
-  void build_boxes() {
-    boxes_.reserve(chains_.size());
-    for (const detail::Chain& c : chains_) boxes_.push_back({xr(c.lo), xr(c.hi), ykey(c.y_min), ykey(c.y_max)});
-    segs_.reserve(order_.size());
-    for (const int k : order_) {
-      const SweepItem& it = items_[k];
-      segs_.push_back({k, xr(it.lo), xr(it.hi), ykey(it.lo), ykey(it.hi)});
-    }
-  }
   // The way a segment goes (see detail::Chain): along the ring, in y, vertical or not.
-  int course(const SweepItem& it) const {
-    const Sign s = K::compare_y(pts_[it.lo], pts_[it.hi]);
-    const int up = s == Sign::negative ? 1 : (s == Sign::positive ? -1 : 0);
-    const bool vertical = xr(it.lo) == xr(it.hi);
-    return (it.forward ? 1 : 0) | (up + 1) << 1 | (vertical ? 8 : 0);
+  int course(const SweepItem& it, const Seg& k) const {
+    const int up = ky_less(k.y_lo, k.y_hi) ? 1 : (ky_less(k.y_hi, k.y_lo) ? -1 : 0);
+    return (it.forward ? 1 : 0) | (up + 1) << 1 | (k.x_lo == k.x_hi ? 8 : 0);
   }
 
-  // Cuts the items into chains.
+  // Cuts the items into chains and makes the segments (in chain order) and the chains'
+  // boxes, in one pass over the items: a ring's consecutive items share a point, whose
+  // x-rank and y are read once (reading them was most of this pass).
   void build_chains() {
     const int n = static_cast<int>(items_.size());
-    order_.resize(items_.size());
+    segs_.resize(items_.size());
     int start = 0;
     int start_course = 0;
     const auto close = [&](int end) {
@@ -196,26 +185,51 @@ class CandidatePairs {
       c.first = start;
       c.last = end;
       c.group = items_[start].group;
-      std::iota(order_.begin() + start, order_.begin() + end, start);
-      if (!items_[start].forward) std::reverse(order_.begin() + start, order_.begin() + end);
-      c.lo = items_[order_[start]].lo;
-      c.hi = items_[order_[end - 1]].hi;
+      if (!items_[start].forward) std::reverse(segs_.begin() + start, segs_.begin() + end);
+      const Seg& head = segs_[start];
+      const Seg& tail = segs_[end - 1];
+      c.lo = items_[head.item].lo;
+      c.hi = items_[tail.item].hi;
       // Monotone in y: the extreme ends are the chain's two ends.
       c.falling = y_less(c.hi, c.lo);
       c.y_min = c.falling ? c.hi : c.lo;
       c.y_max = c.y_min == c.lo ? c.hi : c.lo;
       chains_.push_back(c);
+      boxes_.push_back({head.x_lo, tail.x_hi, c.falling ? tail.y_hi : head.y_lo, c.falling ? head.y_lo : tail.y_hi});
     };
+    int prev_dst = -1;  // the previous item's ring successor, with its x-rank and y
+    int prev_dst_x = 0;
+    YKey prev_dst_y{};
     for (int i = 0; i < n; ++i) {
       const SweepItem& it = items_[i];
-      const int k = course(it);
+      const int src = it.forward ? it.lo : it.hi;
+      const int dst = it.forward ? it.hi : it.lo;
+      int src_x;
+      YKey src_y;
+      if (src == prev_dst) {
+        src_x = prev_dst_x;
+        src_y = prev_dst_y;
+      } else {
+        src_x = xr(src);
+        src_y = ykey(src);
+      }
+      prev_dst = dst;
+      prev_dst_x = xr(dst);
+      prev_dst_y = ykey(dst);
+      Seg& k = segs_[i];
+      k.item = i;
+      k.x_lo = it.forward ? src_x : prev_dst_x;
+      k.x_hi = it.forward ? prev_dst_x : src_x;
+      k.y_lo = it.forward ? src_y : prev_dst_y;
+      k.y_hi = it.forward ? prev_dst_y : src_y;
+      const int kc = course(it, k);
       const bool joins = i > start && i - start < detail::kMaxChain && it.continues && it.group == items_[i - 1].group &&
-                         k == start_course;
+                         kc == start_course;
       if (i > 0 && !joins) {
         close(i);
         start = i;
       }
-      if (i == start) start_course = k;
+      if (i == start) start_course = kc;
     }
     if (n > 0) close(n);
   }
@@ -475,10 +489,9 @@ class CandidatePairs {
   const std::vector<SweepItem>& items_;
   bool bipartite_;
   PairSearch search_;
-  std::vector<int> order_;
   std::vector<detail::Chain> chains_;
   std::vector<Box> boxes_;  // per chain
-  std::vector<Seg> segs_;   // per position in order_
+  std::vector<Seg> segs_;   // in chain order (a chain's segments by x)
   mutable std::vector<Task> tasks_;
 };
 
