@@ -345,8 +345,12 @@ class CandidatePairs {
     return static_cast<std::size_t>(e - s.begin());
   }
 
-  bool boxes_meet(const Box& c, const Box& d) const {
-    return c.x0 <= d.x1 && d.x0 <= c.x1 && !ky_less(d.y1, c.y0) && !ky_less(c.y1, d.y0);
+  bool y_meet(const Box& c, const Box& d) const { return !ky_less(d.y1, c.y0) && !ky_less(c.y1, d.y0); }
+  bool boxes_meet(const Box& c, const Box& d) const { return c.x0 <= d.x1 && d.x0 <= c.x1 && y_meet(c, d); }
+  // Orders a set of chains by the left ends of their boxes (ties by chain, so that the order
+  // depends on the set alone).
+  void sort_by_x0(std::span<int> s) const {
+    std::sort(s.begin(), s.end(), [&](int c, int d) { return boxes_[c].x0 != boxes_[d].x0 ? boxes_[c].x0 < boxes_[d].x0 : c < d; });
   }
   template <class F>
   void pair_if_meet(int c, int d, F& f) const {
@@ -359,8 +363,13 @@ class CandidatePairs {
   void search_self(std::span<int> s, int axis, int depth, F& f, bool stuck = false) const {
     if (s.size() < 2) return;
     if (s.size() <= kDirect || depth >= kMaxDepth) {
+      // By the left ends of the boxes: each box meets only those starting before it ends.
+      sort_by_x0(s);
       for (std::size_t i = 0; i < s.size(); ++i) {
-        for (std::size_t j = i + 1; j < s.size(); ++j) pair_if_meet(s[i], s[j], f);
+        const Box& c = boxes_[s[i]];
+        for (std::size_t j = i + 1; j < s.size() && boxes_[s[j]].x0 <= c.x1; ++j) {
+          if (y_meet(c, boxes_[s[j]])) merge(s[i], s[j], f);
+        }
       }
       return;
     }
@@ -386,9 +395,33 @@ class CandidatePairs {
   void search_both(std::span<int> a, std::span<int> b, int axis, int depth, F& f, bool stuck = false) const {
     if (a.empty() || b.empty()) return;
     // A set of one or two boxes is paired directly: splitting costs as much as pairing.
-    if (a.size() * b.size() <= kDirect * kDirect / 4 || std::min(a.size(), b.size()) <= 2 || depth >= kMaxDepth) {
+    if (std::min(a.size(), b.size()) <= 2) {
       for (const int c : a) {
         for (const int d : b) pair_if_meet(c, d, f);
+      }
+      return;
+    }
+    if (a.size() * b.size() <= kDirect * kDirect / 4 || depth >= kMaxDepth) {
+      // Both by the left ends of the boxes, merged: a pair is met once, when the box that
+      // starts later (or b's, at equal starts) is reached from the other.
+      sort_by_x0(a);
+      sort_by_x0(b);
+      std::size_t i = 0;
+      std::size_t j = 0;
+      while (i < a.size() && j < b.size()) {
+        if (boxes_[a[i]].x0 <= boxes_[b[j]].x0) {
+          const Box& c = boxes_[a[i]];
+          for (std::size_t k = j; k < b.size() && boxes_[b[k]].x0 <= c.x1; ++k) {
+            if (y_meet(c, boxes_[b[k]])) merge(a[i], b[k], f);
+          }
+          ++i;
+        } else {
+          const Box& d = boxes_[b[j]];
+          for (std::size_t k = i; k < a.size() && boxes_[a[k]].x0 <= d.x1; ++k) {
+            if (y_meet(boxes_[a[k]], d)) merge(a[k], b[j], f);
+          }
+          ++j;
+        }
       }
       return;
     }

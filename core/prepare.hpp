@@ -150,7 +150,7 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
                             edge_name(second) + "; edges of a polygon may touch but must not cross");
   }
   if (inserted.empty()) return;
-  inserted.group();
+  inserted.group(static_cast<int>(items.size()));
   std::vector<int> ins;
   int e = 0;
   for (auto& ring : rings) {
