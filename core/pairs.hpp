@@ -349,8 +349,19 @@ class CandidatePairs {
   bool boxes_meet(const Box& c, const Box& d) const { return c.x0 <= d.x1 && d.x0 <= c.x1 && y_meet(c, d); }
   // Orders a set of chains by the left ends of their boxes (ties by chain, so that the order
   // depends on the set alone).
-  void sort_by_x0(std::span<int> s) const {
-    std::sort(s.begin(), s.end(), [&](int c, int d) { return boxes_[c].x0 != boxes_[d].x0 ? boxes_[c].x0 < boxes_[d].x0 : c < d; });
+  // Small sets (the common case) sort packed keys (x0, chain) on the stack; not inlined, so
+  // that the recursive search's frames do not carry the array.
+  [[gnu::noinline]] void sort_by_x0(std::span<int> s) const {
+    std::array<std::uint64_t, 576> keys;
+    if (s.size() > keys.size()) {
+      std::sort(s.begin(), s.end(), [&](int c, int d) { return boxes_[c].x0 != boxes_[d].x0 ? boxes_[c].x0 < boxes_[d].x0 : c < d; });
+      return;
+    }
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      keys[i] = static_cast<std::uint64_t>(static_cast<std::uint32_t>(boxes_[s[i]].x0)) << 32 | static_cast<std::uint32_t>(s[i]);
+    }
+    std::sort(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(s.size()));
+    for (std::size_t i = 0; i < s.size(); ++i) s[i] = static_cast<int>(keys[i] & 0xffffffffu);
   }
   template <class F>
   void pair_if_meet(int c, int d, F& f) const {
