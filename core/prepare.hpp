@@ -201,25 +201,15 @@ struct PointRun {
   int pos = 0;
   int end = 0;
   int step = 1;
-
-  int size() const { return (end - pos) * step; }
-  const P& at(int k) const { return ring[pos + k * step]; }
 };
 
-// Distinct points in lexicographic order with their x-ranks (the rank of their x among the
-// distinct x values, counted from 0 within this block).
-template <class P>
-struct NumberedPoints {
-  std::vector<P> points;
-  std::vector<int> x_rank;
-};
-
-// Merges sorted runs into `out`, setting id_of (input number -> index in out.points) for
-// every point read. A binary min-heap of run indices keyed by the runs' current points;
+// Merges sorted runs into `points` (distinct) and their x-ranks (the rank of their x among
+// the distinct x values), setting id_of (input number -> index in points) for every point
+// read. A binary min-heap of run indices keyed by the runs' current points;
 // sifting moves 4-byte indices into a hole instead of swapping runs.
 template <Kernel K>
-void merge_runs(std::vector<PointRun<typename K::Point>>& runs, NumberedPoints<typename K::Point>& out,
-                std::vector<int>& id_of) {
+void merge_runs(std::vector<PointRun<typename K::Point>>& runs, std::vector<typename K::Point>& points,
+                std::vector<int>& x_rank, std::vector<int>& id_of) {
   using P = typename K::Point;
   const auto less = [](const P& u, const P& w) { return compare_xy<K>(u, w) == Sign::negative; };
   std::vector<int> order(runs.size());
@@ -237,10 +227,8 @@ void merge_runs(std::vector<PointRun<typename K::Point>>& runs, NumberedPoints<t
     order[i] = moving;
   };
   for (std::size_t i = order.size() / 2; i-- > 0;) sift_down(i);
-  std::vector<P>& points = out.points;
-  std::vector<int>& x_rank = out.x_rank;
   std::size_t n = points.size();
-  for (const auto& run : runs) n += static_cast<std::size_t>(run.size());
+  for (const auto& run : runs) n += static_cast<std::size_t>((run.end - run.pos) * run.step);
   points.reserve(n);
   x_rank.reserve(n);
   while (!order.empty()) {
@@ -267,41 +255,16 @@ void merge_runs(std::vector<PointRun<typename K::Point>>& runs, NumberedPoints<t
   }
 }
 
-// A key that about half of the runs' points lie below: the weighted median of a few points
-// sampled evenly from each run.
-template <Kernel K>
-typename K::Point median_key(const std::vector<PointRun<typename K::Point>>& runs) {
-  using P = typename K::Point;
-  std::vector<std::pair<P, double>> samples;
-  double total = 0;
-  for (const auto& run : runs) {
-    const int n = run.size();
-    const int k = std::min(n, 16);
-    for (int i = 0; i < k; ++i) samples.emplace_back(run.at(static_cast<int>(static_cast<long long>(i) * n / k)), double(n) / k);
-    total += n;
-  }
-  std::sort(samples.begin(), samples.end(),
-            [](const auto& u, const auto& w) { return compare_xy<K>(u.first, w.first) == Sign::negative; });
-  double seen = 0;
-  for (const auto& [q, weight] : samples) {
-    seen += weight;
-    if (2 * seen >= total) return q;
-  }
-  return samples.back().first;
-}
-
 // Numbers the distinct input points of A and B in lexicographic order by merging the rings'
 // monotone runs, which are few on smooth or convex rings (a ring has at least two): each
 // point then costs about log2(runs) comparisons instead of a sort's log2(n). Fills `points`
 // (distinct, sorted), their x-ranks and id_of (input number, counted polygon after polygon
-// and ring after ring -> id). On two threads or more, the points below a median key and the
-// others are merged at once and joined (their ids and x-ranks shifted): equal points fall on
-// one side, so the result is the same on any number of threads. Returns false, having done nothing, when there are
-// more than `max_runs` runs.
+// and ring after ring -> id). Returns false, having done nothing, when there are more than
+// `max_runs` runs. (Merging the points below a median key and the others on two threads
+// was tried: slower whenever the second core is busy, and little faster when it is not.)
 template <Kernel K>
 bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point>*, 2>& in, std::size_t max_runs,
-                           unsigned threads, std::vector<typename K::Point>& points, std::vector<int>& x_rank,
-                           std::vector<int>& id_of) {
+                           std::vector<typename K::Point>& points, std::vector<int>& x_rank, std::vector<int>& id_of) {
   using P = typename K::Point;
   const auto less = [](const P& u, const P& w) { return compare_xy<K>(u, w) == Sign::negative; };
   std::vector<PointRun<P>> runs;
@@ -324,52 +287,7 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
       ref += n;
     }
   }
-  if (threads < 2 || runs.size() < 2) {
-    NumberedPoints<P> all{std::move(points), std::move(x_rank)};
-    merge_runs<K>(runs, all, id_of);
-    points = std::move(all.points);
-    x_rank = std::move(all.x_rank);
-    return true;
-  }
-  // Each run cut at the median key: the points below it, and the others.
-  const P split = median_key<K>(runs);
-  std::array<std::vector<PointRun<P>>, 2> side;
-  for (const auto& run : runs) {
-    const int n = run.size();
-    int lo = 0;
-    int hi = n;
-    while (lo < hi) {  // the first of the run's points not below `split`
-      const int mid = lo + (hi - lo) / 2;
-      if (less(run.at(mid), split)) {
-        lo = mid + 1;
-      } else {
-        hi = mid;
-      }
-    }
-    const int cut = run.pos + lo * run.step;
-    if (lo > 0) side[0].push_back({run.key, run.ring, run.ring_ref, run.pos, cut, run.step});
-    if (lo < n) side[1].push_back({run.ring[cut], run.ring, run.ring_ref, cut, run.end, run.step});
-  }
-  std::array<std::vector<PointRun<P>>, 2> kept = side;  // the ranges, for shifting ids below
-  std::array<NumberedPoints<P>, 2> part;
-  run_tasks(2, 2, [&](std::size_t s) { merge_runs<K>(side[s], part[s], id_of); });
-  const int id_shift = static_cast<int>(part[0].points.size());
-  const int x_shift = part[0].points.empty() || part[1].points.empty()
-                          ? 0
-                          : part[0].x_rank.back() + (K::compare_x(part[0].points.back(), part[1].points.front()) != Sign::zero);
-  run_tasks(2, 2, [&](std::size_t task) {
-    if (task == 0) {
-      for (const auto& run : kept[1]) {
-        for (int pos = run.pos; pos != run.end; pos += run.step) id_of[run.ring_ref + pos] += id_shift;
-      }
-    } else {
-      for (int& r : part[1].x_rank) r += x_shift;
-    }
-  });
-  points = std::move(part[0].points);
-  points.insert(points.end(), part[1].points.begin(), part[1].points.end());
-  x_rank = std::move(part[0].x_rank);
-  x_rank.insert(x_rank.end(), part[1].x_rank.begin(), part[1].x_rank.end());
+  merge_runs<K>(runs, points, x_rank, id_of);
   return true;
 }
 
@@ -392,7 +310,7 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
   // otherwise the points themselves (not indices into the rings) are sorted. The second
   // member numbers the vertices polygon after polygon, ring after ring.
   constexpr std::size_t max_runs = 32;
-  if (!detail::number_points_by_runs<K>(in, max_runs, threads_for(total, threads), arr.points, arr.x_rank, id_of)) {
+  if (!detail::number_points_by_runs<K>(in, max_runs, arr.points, arr.x_rank, id_of)) {
     std::vector<std::pair<typename K::Point, int>> sorted;
     sorted.reserve(total);
     for (const auto* poly : in) {
