@@ -11,6 +11,7 @@
 #include <span>
 #include <cstdint>
 #include <numeric>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -254,7 +255,8 @@ class CandidatePairs {
       tasks_.push_back({std::move(s), {}, axis, true});
       return;
     }
-    const auto [below, above] = split(s, axis);
+    const auto [below, above, along] = split(s, axis);
+    axis = along;
     const std::vector<int> low(s.begin(), s.begin() + below), high(s.begin() + below, s.begin() + above);
     const std::vector<int> sides(s.begin(), s.begin() + above), across(s.begin() + above, s.end());
     plan_self(low, 1 - axis, levels - 1);
@@ -318,13 +320,40 @@ class CandidatePairs {
     return Place::across;
   }
   // Reorders s as [below | above | across] the pivot; returns the ends of the first two.
+  // One pass, each box placed once (a three-way partition: below grows from the front,
+  // across from the back).
   std::pair<std::size_t, std::size_t> split_at(std::span<int> s, int axis, int pivot) const {
-    const auto b = std::partition(s.begin(), s.end(), [&](int c) { return place(c, axis, pivot) == Place::below; });
-    const auto e = std::partition(b, s.end(), [&](int c) { return place(c, axis, pivot) == Place::above; });
-    return {static_cast<std::size_t>(b - s.begin()), static_cast<std::size_t>(e - s.begin())};
+    std::size_t below = 0;
+    std::size_t i = 0;
+    std::size_t across = s.size();
+    while (i < across) {
+      const Place where = place(s[i], axis, pivot);
+      if (where == Place::below) {
+        std::swap(s[below++], s[i++]);
+      } else if (where == Place::above) {
+        ++i;
+      } else {
+        std::swap(s[i], s[--across]);
+      }
+    }
+    return {below, across};
   }
-  std::pair<std::size_t, std::size_t> split(std::span<int> s, int axis) const {
-    return split_at(s, axis, choose_pivot(s, axis));
+  // The axis to split s along and its pivot: `axis`, unless every sampled box lies across
+  // that axis' pivot (full-width stripes lie across every pivot in x), then the other one;
+  // a split that separates nothing costs a pass over the set.
+  std::pair<int, int> choose_split(std::span<const int> s, int axis) const {
+    const int pivot = choose_pivot(s, axis);
+    const std::size_t k = std::min<std::size_t>(15, s.size());
+    for (std::size_t i = 0; i < k; ++i) {
+      if (place(s[k == 1 ? 0 : i * (s.size() - 1) / (k - 1)], axis, pivot) != Place::across) return {axis, pivot};
+    }
+    return {1 - axis, choose_pivot(s, 1 - axis)};
+  }
+  // Splits s (see split_at) along the axis choose_split picks; returns the ends and the axis.
+  std::tuple<std::size_t, std::size_t, int> split(std::span<int> s, int axis) const {
+    const auto [along, pivot] = choose_split(s, axis);
+    const auto [below, above] = split_at(s, along, pivot);
+    return {below, above, along};
   }
 
   // The bounding box of a set of chains: x-ranks and point ids of the lowest and highest y.
@@ -384,7 +413,8 @@ class CandidatePairs {
       }
       return;
     }
-    const auto [below, above] = split(s, axis);
+    const auto [below, above, along] = split(s, axis);
+    axis = along;
     if (below == 0 && above == 0) {  // every box lies across the pivot: try the other axis
       search_self(s, 1 - axis, stuck ? kMaxDepth : depth + 1, f, true);
       return;
@@ -444,7 +474,7 @@ class CandidatePairs {
         const std::size_t n = set->size();
         for (std::size_t i = 0; i < 8 && i < n; ++i) picks[k++] = (*set)[n == 1 ? 0 : i * (n - 1) / std::min<std::size_t>(7, n - 1)];
       }
-      pivot = choose_pivot(std::span<const int>(picks.data(), k), axis);
+      std::tie(axis, pivot) = choose_split(std::span<const int>(picks.data(), k), axis);
     }
     const auto [a_below, a_above] = split_at(a, axis, pivot);
     const auto [b_below, b_above] = split_at(b, axis, pivot);
