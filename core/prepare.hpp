@@ -84,26 +84,17 @@ inline std::string edge_name(const RingEdge& e) {
 template <Kernel K>
 void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
                           std::vector<IdRing>& rings, const char* poly_name, PairSearch search, unsigned threads = 1) {
-  struct EdgeRef {
-    int ring = -1;
-    int k = -1;
-  };
   std::size_t num_edges = 0;
   for (const auto& ring : rings) num_edges += ring.ids.size() < 2 ? 0 : ring.ids.size();
   std::vector<SweepItem> items;
-  std::vector<EdgeRef> refs;
   items.reserve(num_edges);
-  refs.reserve(num_edges);
-  for (int r = 0; r < static_cast<int>(rings.size()); ++r) {
-    const auto& ids = rings[r].ids;
+  for (const auto& ring : rings) {
+    const auto& ids = ring.ids;
     if (ids.size() < 2) continue;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const int u = ids[k];
       const int w = ids[k + 1 < ids.size() ? k + 1 : 0];
       add_sweep_item(items, u, w, 0, k > 0);
-      EdgeRef& ref = refs.emplace_back();
-      ref.ring = r;
-      ref.k = static_cast<int>(k);
     }
   }
   // Per part of the pair search (see CandidatePairs): points of the polygon on its own
@@ -141,10 +132,18 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
     inserted.append(std::move(f.inserted));
   }
   if (crossing.first >= 0) {
-    const EdgeRef ea = refs[crossing.first];
-    const EdgeRef eb = refs[crossing.second];
-    const RingEdge first = ring_edge(rings[ea.ring], ea.ring, ea.k);
-    const RingEdge second = ring_edge(rings[eb.ring], eb.ring, eb.k);
+    // The ring and the position in it of an item (items follow the rings of 2+ points).
+    const auto ring_edge_of = [&](int item) {
+      int r = 0;
+      for (;; ++r) {
+        const int n = rings[r].ids.size() < 2 ? 0 : static_cast<int>(rings[r].ids.size());
+        if (item < n) break;
+        item -= n;
+      }
+      return ring_edge(rings[r], r, static_cast<std::size_t>(item));
+    };
+    const RingEdge first = ring_edge_of(crossing.first);
+    const RingEdge second = ring_edge_of(crossing.second);
     throw CrossingEdges(poly_name[0] == 'A' ? 0 : 1, first, second,
                         std::string("polygon ") + poly_name + ": " + edge_name(first) + " crosses " +
                             edge_name(second) + "; edges of a polygon may touch but must not cross");
