@@ -28,23 +28,23 @@ class EdgeInsertions {
   bool empty() const { return list_.empty(); }
   std::size_t size() const { return list_.size(); }
 
-  // Orders the pairs by edge.
-  void group() {
-    std::sort(list_.begin(), list_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    next_ = 0;
-  }
-
-  // Orders the pairs by edge, each edge's in the order they were added, when every edge is
-  // below num_edges: a counting sort, linear where the comparison sort above is not (the
-  // winding arrangement of many rings inserts hundreds of thousands of crossings).
+  // Orders the pairs by edge (every edge below num_edges), each edge's in the order they
+  // were added: a counting sort when they are many, linear where a comparison sort is not
+  // (the winding arrangement of many rings inserts hundreds of thousands of crossings, a
+  // grid of squares as many touching vertices); a stable comparison sort, the same order,
+  // when they are few next to the edges (the counting sort's array would cost more).
   void group(int num_edges) {
+    next_ = 0;
+    if (list_.size() < static_cast<std::size_t>(num_edges) / 16) {
+      std::stable_sort(list_.begin(), list_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+      return;
+    }
     std::vector<std::size_t> start(static_cast<std::size_t>(num_edges) + 1, 0);
     for (const auto& p : list_) ++start[static_cast<std::size_t>(p.first) + 1];
     for (std::size_t e = 1; e < start.size(); ++e) start[e] += start[e - 1];
     std::vector<std::pair<int, int>> by_edge(list_.size());
     for (const auto& p : list_) by_edge[start[p.first]++] = p;
     list_ = std::move(by_edge);
-    next_ = 0;
   }
 
   // The smallest edge not taken yet that has insertions, or INT_MAX.

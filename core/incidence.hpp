@@ -72,7 +72,19 @@ class FragmentEndTable {
       }
     }
     if (grouped.empty()) return;
-    std::sort(grouped.begin(), grouped.end());
+    // Grouped by vertex: a counting sort when the visits are many (a grid of squares meets
+    // at most of its vertices), else a comparison sort. Each group's codes are sorted below,
+    // so the order of a vertex's visits does not matter.
+    if (grouped.size() >= static_cast<std::size_t>(num_vertices) / 16) {
+      std::vector<int> start(static_cast<std::size_t>(num_vertices) + 1, 0);
+      for (const Visit& g : grouped) ++start[static_cast<std::size_t>(g.vertex) + 1];
+      for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+      std::vector<Visit> by_vertex(grouped.size());
+      for (const Visit& g : grouped) by_vertex[static_cast<std::size_t>(start[static_cast<std::size_t>(g.vertex)]++)] = g;
+      grouped = std::move(by_vertex);
+    } else {
+      std::sort(grouped.begin(), grouped.end());
+    }
     group_begin_.push_back(0);
     codes_.reserve(2 * grouped.size());
     for (std::size_t k = 0; k < grouped.size();) {

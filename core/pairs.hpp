@@ -11,6 +11,7 @@
 #include <span>
 #include <cstdint>
 #include <numeric>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -58,7 +59,7 @@ namespace detail {
 // are short, so that a chain's box stays close to its segments (the box of an L of two
 // sides of a large square would overlap every smaller square inside it).
 struct Chain {
-  int first = 0;  // range of `order` (items sorted by lo along the chain)
+  int first = 0;  // range of segs_ (the chain's segments sorted by lo)
   int last = 0;
   int lo = 0;  // leftmost and rightmost point ids
   int hi = 0;
@@ -92,7 +93,6 @@ class CandidatePairs {
       : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite), search_(search) {
     if (search_ == PairSearch::sweep) {
       build_chains();
-      build_boxes();
       plan();
     }
   }
@@ -161,34 +161,24 @@ class CandidatePairs {
     int x0, x1;
     YKey y0, y1;
   };
-  // A segment in `order_`: its item, the x-ranks and the y of its lo and hi ends.
+  // A segment in chain order: its item, the x-ranks and the y of its lo and hi ends.
   struct Seg {
     int item, x_lo, x_hi;
     YKey y_lo, y_hi;
   };
 
-  // The boxes of the chains and the segments in chain order, read by the search.
-  void build_boxes() {
-    boxes_.reserve(chains_.size());
-    for (const detail::Chain& c : chains_) boxes_.push_back({xr(c.lo), xr(c.hi), ykey(c.y_min), ykey(c.y_max)});
-    segs_.reserve(order_.size());
-    for (const int k : order_) {
-      const SweepItem& it = items_[k];
-      segs_.push_back({k, xr(it.lo), xr(it.hi), ykey(it.lo), ykey(it.hi)});
-    }
-  }
   // The way a segment goes (see detail::Chain): along the ring, in y, vertical or not.
-  int course(const SweepItem& it) const {
-    const Sign s = K::compare_y(pts_[it.lo], pts_[it.hi]);
-    const int up = s == Sign::negative ? 1 : (s == Sign::positive ? -1 : 0);
-    const bool vertical = xr(it.lo) == xr(it.hi);
-    return (it.forward ? 1 : 0) | (up + 1) << 1 | (vertical ? 8 : 0);
+  int course(const SweepItem& it, const Seg& k) const {
+    const int up = ky_less(k.y_lo, k.y_hi) ? 1 : (ky_less(k.y_hi, k.y_lo) ? -1 : 0);
+    return (it.forward ? 1 : 0) | (up + 1) << 1 | (k.x_lo == k.x_hi ? 8 : 0);
   }
 
-  // Cuts the items into chains.
+  // Cuts the items into chains and makes the segments (in chain order) and the chains'
+  // boxes, in one pass over the items: a ring's consecutive items share a point, whose
+  // x-rank and y are read once (reading them was most of this pass).
   void build_chains() {
     const int n = static_cast<int>(items_.size());
-    order_.resize(items_.size());
+    segs_.resize(items_.size());
     int start = 0;
     int start_course = 0;
     const auto close = [&](int end) {
@@ -196,26 +186,51 @@ class CandidatePairs {
       c.first = start;
       c.last = end;
       c.group = items_[start].group;
-      std::iota(order_.begin() + start, order_.begin() + end, start);
-      if (!items_[start].forward) std::reverse(order_.begin() + start, order_.begin() + end);
-      c.lo = items_[order_[start]].lo;
-      c.hi = items_[order_[end - 1]].hi;
+      if (!items_[start].forward) std::reverse(segs_.begin() + start, segs_.begin() + end);
+      const Seg& head = segs_[start];
+      const Seg& tail = segs_[end - 1];
+      c.lo = items_[head.item].lo;
+      c.hi = items_[tail.item].hi;
       // Monotone in y: the extreme ends are the chain's two ends.
       c.falling = y_less(c.hi, c.lo);
       c.y_min = c.falling ? c.hi : c.lo;
       c.y_max = c.y_min == c.lo ? c.hi : c.lo;
       chains_.push_back(c);
+      boxes_.push_back({head.x_lo, tail.x_hi, c.falling ? tail.y_hi : head.y_lo, c.falling ? head.y_lo : tail.y_hi});
     };
+    int prev_dst = -1;  // the previous item's ring successor, with its x-rank and y
+    int prev_dst_x = 0;
+    YKey prev_dst_y{};
     for (int i = 0; i < n; ++i) {
       const SweepItem& it = items_[i];
-      const int k = course(it);
+      const int src = it.forward ? it.lo : it.hi;
+      const int dst = it.forward ? it.hi : it.lo;
+      int src_x;
+      YKey src_y;
+      if (src == prev_dst) {
+        src_x = prev_dst_x;
+        src_y = prev_dst_y;
+      } else {
+        src_x = xr(src);
+        src_y = ykey(src);
+      }
+      prev_dst = dst;
+      prev_dst_x = xr(dst);
+      prev_dst_y = ykey(dst);
+      Seg& k = segs_[i];
+      k.item = i;
+      k.x_lo = it.forward ? src_x : prev_dst_x;
+      k.x_hi = it.forward ? prev_dst_x : src_x;
+      k.y_lo = it.forward ? src_y : prev_dst_y;
+      k.y_hi = it.forward ? prev_dst_y : src_y;
+      const int kc = course(it, k);
       const bool joins = i > start && i - start < detail::kMaxChain && it.continues && it.group == items_[i - 1].group &&
-                         k == start_course;
+                         kc == start_course;
       if (i > 0 && !joins) {
         close(i);
         start = i;
       }
-      if (i == start) start_course = k;
+      if (i == start) start_course = kc;
     }
     if (n > 0) close(n);
   }
@@ -240,7 +255,8 @@ class CandidatePairs {
       tasks_.push_back({std::move(s), {}, axis, true});
       return;
     }
-    const auto [below, above] = split(s, axis);
+    const auto [below, above, along] = split(s, axis);
+    axis = along;
     const std::vector<int> low(s.begin(), s.begin() + below), high(s.begin() + below, s.begin() + above);
     const std::vector<int> sides(s.begin(), s.begin() + above), across(s.begin() + above, s.end());
     plan_self(low, 1 - axis, levels - 1);
@@ -304,13 +320,40 @@ class CandidatePairs {
     return Place::across;
   }
   // Reorders s as [below | above | across] the pivot; returns the ends of the first two.
+  // One pass, each box placed once (a three-way partition: below grows from the front,
+  // across from the back).
   std::pair<std::size_t, std::size_t> split_at(std::span<int> s, int axis, int pivot) const {
-    const auto b = std::partition(s.begin(), s.end(), [&](int c) { return place(c, axis, pivot) == Place::below; });
-    const auto e = std::partition(b, s.end(), [&](int c) { return place(c, axis, pivot) == Place::above; });
-    return {static_cast<std::size_t>(b - s.begin()), static_cast<std::size_t>(e - s.begin())};
+    std::size_t below = 0;
+    std::size_t i = 0;
+    std::size_t across = s.size();
+    while (i < across) {
+      const Place where = place(s[i], axis, pivot);
+      if (where == Place::below) {
+        std::swap(s[below++], s[i++]);
+      } else if (where == Place::above) {
+        ++i;
+      } else {
+        std::swap(s[i], s[--across]);
+      }
+    }
+    return {below, across};
   }
-  std::pair<std::size_t, std::size_t> split(std::span<int> s, int axis) const {
-    return split_at(s, axis, choose_pivot(s, axis));
+  // The axis to split s along and its pivot: `axis`, unless every sampled box lies across
+  // that axis' pivot (full-width stripes lie across every pivot in x), then the other one;
+  // a split that separates nothing costs a pass over the set.
+  std::pair<int, int> choose_split(std::span<const int> s, int axis) const {
+    const int pivot = choose_pivot(s, axis);
+    const std::size_t k = std::min<std::size_t>(15, s.size());
+    for (std::size_t i = 0; i < k; ++i) {
+      if (place(s[k == 1 ? 0 : i * (s.size() - 1) / (k - 1)], axis, pivot) != Place::across) return {axis, pivot};
+    }
+    return {1 - axis, choose_pivot(s, 1 - axis)};
+  }
+  // Splits s (see split_at) along the axis choose_split picks; returns the ends and the axis.
+  std::tuple<std::size_t, std::size_t, int> split(std::span<int> s, int axis) const {
+    const auto [along, pivot] = choose_split(s, axis);
+    const auto [below, above] = split_at(s, along, pivot);
+    return {below, above, along};
   }
 
   // The bounding box of a set of chains: x-ranks and point ids of the lowest and highest y.
@@ -331,8 +374,23 @@ class CandidatePairs {
     return static_cast<std::size_t>(e - s.begin());
   }
 
-  bool boxes_meet(const Box& c, const Box& d) const {
-    return c.x0 <= d.x1 && d.x0 <= c.x1 && !ky_less(d.y1, c.y0) && !ky_less(c.y1, d.y0);
+  bool y_meet(const Box& c, const Box& d) const { return !ky_less(d.y1, c.y0) && !ky_less(c.y1, d.y0); }
+  bool boxes_meet(const Box& c, const Box& d) const { return c.x0 <= d.x1 && d.x0 <= c.x1 && y_meet(c, d); }
+  // Orders a set of chains by the left ends of their boxes (ties by chain, so that the order
+  // depends on the set alone).
+  // Small sets (the common case) sort packed keys (x0, chain) on the stack; not inlined, so
+  // that the recursive search's frames do not carry the array.
+  [[gnu::noinline]] void sort_by_x0(std::span<int> s) const {
+    std::array<std::uint64_t, 576> keys;
+    if (s.size() > keys.size()) {
+      std::sort(s.begin(), s.end(), [&](int c, int d) { return boxes_[c].x0 != boxes_[d].x0 ? boxes_[c].x0 < boxes_[d].x0 : c < d; });
+      return;
+    }
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      keys[i] = static_cast<std::uint64_t>(static_cast<std::uint32_t>(boxes_[s[i]].x0)) << 32 | static_cast<std::uint32_t>(s[i]);
+    }
+    std::sort(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(s.size()));
+    for (std::size_t i = 0; i < s.size(); ++i) s[i] = static_cast<int>(keys[i] & 0xffffffffu);
   }
   template <class F>
   void pair_if_meet(int c, int d, F& f) const {
@@ -345,12 +403,18 @@ class CandidatePairs {
   void search_self(std::span<int> s, int axis, int depth, F& f, bool stuck = false) const {
     if (s.size() < 2) return;
     if (s.size() <= kDirect || depth >= kMaxDepth) {
+      // By the left ends of the boxes: each box meets only those starting before it ends.
+      sort_by_x0(s);
       for (std::size_t i = 0; i < s.size(); ++i) {
-        for (std::size_t j = i + 1; j < s.size(); ++j) pair_if_meet(s[i], s[j], f);
+        const Box& c = boxes_[s[i]];
+        for (std::size_t j = i + 1; j < s.size() && boxes_[s[j]].x0 <= c.x1; ++j) {
+          if (y_meet(c, boxes_[s[j]])) merge(s[i], s[j], f);
+        }
       }
       return;
     }
-    const auto [below, above] = split(s, axis);
+    const auto [below, above, along] = split(s, axis);
+    axis = along;
     if (below == 0 && above == 0) {  // every box lies across the pivot: try the other axis
       search_self(s, 1 - axis, stuck ? kMaxDepth : depth + 1, f, true);
       return;
@@ -372,9 +436,33 @@ class CandidatePairs {
   void search_both(std::span<int> a, std::span<int> b, int axis, int depth, F& f, bool stuck = false) const {
     if (a.empty() || b.empty()) return;
     // A set of one or two boxes is paired directly: splitting costs as much as pairing.
-    if (a.size() * b.size() <= kDirect * kDirect / 4 || std::min(a.size(), b.size()) <= 2 || depth >= kMaxDepth) {
+    if (std::min(a.size(), b.size()) <= 2) {
       for (const int c : a) {
         for (const int d : b) pair_if_meet(c, d, f);
+      }
+      return;
+    }
+    if (a.size() * b.size() <= kDirect * kDirect / 4 || depth >= kMaxDepth) {
+      // Both by the left ends of the boxes, merged: a pair is met once, when the box that
+      // starts later (or b's, at equal starts) is reached from the other.
+      sort_by_x0(a);
+      sort_by_x0(b);
+      std::size_t i = 0;
+      std::size_t j = 0;
+      while (i < a.size() && j < b.size()) {
+        if (boxes_[a[i]].x0 <= boxes_[b[j]].x0) {
+          const Box& c = boxes_[a[i]];
+          for (std::size_t k = j; k < b.size() && boxes_[b[k]].x0 <= c.x1; ++k) {
+            if (y_meet(c, boxes_[b[k]])) merge(a[i], b[k], f);
+          }
+          ++i;
+        } else {
+          const Box& d = boxes_[b[j]];
+          for (std::size_t k = i; k < a.size() && boxes_[a[k]].x0 <= d.x1; ++k) {
+            if (y_meet(boxes_[a[k]], d)) merge(a[k], b[j], f);
+          }
+          ++j;
+        }
       }
       return;
     }
@@ -386,7 +474,7 @@ class CandidatePairs {
         const std::size_t n = set->size();
         for (std::size_t i = 0; i < 8 && i < n; ++i) picks[k++] = (*set)[n == 1 ? 0 : i * (n - 1) / std::min<std::size_t>(7, n - 1)];
       }
-      pivot = choose_pivot(std::span<const int>(picks.data(), k), axis);
+      std::tie(axis, pivot) = choose_split(std::span<const int>(picks.data(), k), axis);
     }
     const auto [a_below, a_above] = split_at(a, axis, pivot);
     const auto [b_below, b_above] = split_at(b, axis, pivot);
@@ -475,10 +563,9 @@ class CandidatePairs {
   const std::vector<SweepItem>& items_;
   bool bipartite_;
   PairSearch search_;
-  std::vector<int> order_;
   std::vector<detail::Chain> chains_;
   std::vector<Box> boxes_;  // per chain
-  std::vector<Seg> segs_;   // per position in order_
+  std::vector<Seg> segs_;   // in chain order (a chain's segments by x)
   mutable std::vector<Task> tasks_;
 };
 

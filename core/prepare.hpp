@@ -84,26 +84,17 @@ inline std::string edge_name(const RingEdge& e) {
 template <Kernel K>
 void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
                           std::vector<IdRing>& rings, const char* poly_name, PairSearch search, unsigned threads = 1) {
-  struct EdgeRef {
-    int ring = -1;
-    int k = -1;
-  };
   std::size_t num_edges = 0;
   for (const auto& ring : rings) num_edges += ring.ids.size() < 2 ? 0 : ring.ids.size();
   std::vector<SweepItem> items;
-  std::vector<EdgeRef> refs;
   items.reserve(num_edges);
-  refs.reserve(num_edges);
-  for (int r = 0; r < static_cast<int>(rings.size()); ++r) {
-    const auto& ids = rings[r].ids;
+  for (const auto& ring : rings) {
+    const auto& ids = ring.ids;
     if (ids.size() < 2) continue;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const int u = ids[k];
       const int w = ids[k + 1 < ids.size() ? k + 1 : 0];
       add_sweep_item(items, u, w, 0, k > 0);
-      EdgeRef& ref = refs.emplace_back();
-      ref.ring = r;
-      ref.k = static_cast<int>(k);
     }
   }
   // Per part of the pair search (see CandidatePairs): points of the polygon on its own
@@ -141,16 +132,24 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
     inserted.append(std::move(f.inserted));
   }
   if (crossing.first >= 0) {
-    const EdgeRef ea = refs[crossing.first];
-    const EdgeRef eb = refs[crossing.second];
-    const RingEdge first = ring_edge(rings[ea.ring], ea.ring, ea.k);
-    const RingEdge second = ring_edge(rings[eb.ring], eb.ring, eb.k);
+    // The ring and the position in it of an item (items follow the rings of 2+ points).
+    const auto ring_edge_of = [&](int item) {
+      int r = 0;
+      for (;; ++r) {
+        const int n = rings[r].ids.size() < 2 ? 0 : static_cast<int>(rings[r].ids.size());
+        if (item < n) break;
+        item -= n;
+      }
+      return ring_edge(rings[r], r, static_cast<std::size_t>(item));
+    };
+    const RingEdge first = ring_edge_of(crossing.first);
+    const RingEdge second = ring_edge_of(crossing.second);
     throw CrossingEdges(poly_name[0] == 'A' ? 0 : 1, first, second,
                         std::string("polygon ") + poly_name + ": " + edge_name(first) + " crosses " +
                             edge_name(second) + "; edges of a polygon may touch but must not cross");
   }
   if (inserted.empty()) return;
-  inserted.group();
+  inserted.group(static_cast<int>(items.size()));
   std::vector<int> ins;
   int e = 0;
   for (auto& ring : rings) {
@@ -203,14 +202,68 @@ struct PointRun {
   int step = 1;
 };
 
+// Merges sorted runs into `points` (distinct) and their x-ranks (the rank of their x among
+// the distinct x values), setting id_of (input number -> index in points) for every point
+// read. A binary min-heap of run indices keyed by the runs' current points;
+// sifting moves 4-byte indices into a hole instead of swapping runs.
+template <Kernel K>
+void merge_runs(std::vector<PointRun<typename K::Point>>& runs, std::vector<typename K::Point>& points,
+                std::vector<int>& x_rank, std::vector<int>& id_of) {
+  using P = typename K::Point;
+  const auto less = [](const P& u, const P& w) { return compare_xy<K>(u, w) == Sign::negative; };
+  std::vector<int> order(runs.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto sift_down = [&](std::size_t i) {
+    const std::size_t n = order.size();
+    const int moving = order[i];
+    const P& key = runs[moving].key;
+    for (std::size_t l = 2 * i + 1; l < n; l = 2 * i + 1) {
+      const std::size_t c = l + 1 < n && less(runs[order[l + 1]].key, runs[order[l]].key) ? l + 1 : l;
+      if (!less(runs[order[c]].key, key)) break;
+      order[i] = order[c];
+      i = c;
+    }
+    order[i] = moving;
+  };
+  for (std::size_t i = order.size() / 2; i-- > 0;) sift_down(i);
+  std::size_t n = points.size();
+  for (const auto& run : runs) n += static_cast<std::size_t>((run.end - run.pos) * run.step);
+  points.reserve(n);
+  x_rank.reserve(n);
+  while (!order.empty()) {
+    PointRun<P>& run = runs[order.front()];
+    if (points.empty()) {
+      points.push_back(run.key);
+      x_rank.push_back(0);
+    } else if (const Sign sx = K::compare_x(points.back(), run.key); sx != Sign::zero) {
+      points.push_back(run.key);
+      x_rank.push_back(x_rank.back() + 1);
+    } else if (K::compare_y(points.back(), run.key) != Sign::zero) {
+      points.push_back(run.key);
+      x_rank.push_back(x_rank.back());
+    }
+    id_of[run.ring_ref + run.pos] = static_cast<int>(points.size()) - 1;
+    run.pos += run.step;
+    if (run.pos == run.end) {
+      order.front() = order.back();
+      order.pop_back();
+    } else {
+      run.key = run.ring[run.pos];
+    }
+    if (!order.empty()) sift_down(0);
+  }
+}
+
 // Numbers the distinct input points of A and B in lexicographic order by merging the rings'
 // monotone runs, which are few on smooth or convex rings (a ring has at least two): each
 // point then costs about log2(runs) comparisons instead of a sort's log2(n). Fills `points`
-// (distinct, sorted) and id_of (input number, counted polygon after polygon and ring after
-// ring -> id). Returns false, having done nothing, when there are more than `max_runs` runs.
+// (distinct, sorted), their x-ranks and id_of (input number, counted polygon after polygon
+// and ring after ring -> id). Returns false, having done nothing, when there are more than
+// `max_runs` runs. (Merging the points below a median key and the others on two threads
+// was tried: slower whenever the second core is busy, and little faster when it is not.)
 template <Kernel K>
 bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point>*, 2>& in, std::size_t max_runs,
-                           std::vector<typename K::Point>& points, std::vector<int>& id_of) {
+                           std::vector<typename K::Point>& points, std::vector<int>& x_rank, std::vector<int>& id_of) {
   using P = typename K::Point;
   const auto less = [](const P& u, const P& w) { return compare_xy<K>(u, w) == Sign::negative; };
   std::vector<PointRun<P>> runs;
@@ -233,35 +286,7 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
       ref += n;
     }
   }
-  // A binary min-heap of run indices keyed by the runs' current points; sifting moves
-  // 4-byte indices into a hole instead of swapping runs.
-  std::vector<int> order(runs.size());
-  std::iota(order.begin(), order.end(), 0);
-  const auto sift_down = [&](std::size_t i) {
-    const std::size_t n = order.size();
-    const int moving = order[i];
-    const P& key = runs[moving].key;
-    for (std::size_t l = 2 * i + 1; l < n; l = 2 * i + 1) {
-      const std::size_t c = l + 1 < n && less(runs[order[l + 1]].key, runs[order[l]].key) ? l + 1 : l;
-      if (!less(runs[order[c]].key, key)) break;
-      order[i] = order[c];
-      i = c;
-    }
-    order[i] = moving;
-  };
-  for (std::size_t i = order.size() / 2; i-- > 0;) sift_down(i);
-  while (!order.empty()) {
-    PointRun<P>& run = runs[order.front()];
-    id_of[run.ring_ref + run.pos] = append_distinct<K>(points, run.key);
-    run.pos += run.step;
-    if (run.pos == run.end) {
-      order.front() = order.back();
-      order.pop_back();
-    } else {
-      run.key = run.ring[run.pos];
-    }
-    if (!order.empty()) sift_down(0);
-  }
+  merge_runs<K>(runs, points, x_rank, id_of);
   return true;
 }
 
@@ -284,7 +309,7 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
   // otherwise the points themselves (not indices into the rings) are sorted. The second
   // member numbers the vertices polygon after polygon, ring after ring.
   constexpr std::size_t max_runs = 32;
-  if (!detail::number_points_by_runs<K>(in, max_runs, arr.points, id_of)) {
+  if (!detail::number_points_by_runs<K>(in, max_runs, arr.points, arr.x_rank, id_of)) {
     std::vector<std::pair<typename K::Point, int>> sorted;
     sorted.reserve(total);
     for (const auto* poly : in) {
@@ -295,10 +320,10 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
     std::sort(sorted.begin(), sorted.end(),
               [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; });
     for (const auto& [q, input] : sorted) id_of[input] = detail::append_distinct<K>(arr.points, q);
-  }
-  arr.x_rank.resize(arr.points.size());
-  for (std::size_t i = 0; i < arr.points.size(); ++i) {
-    arr.x_rank[i] = i == 0 ? 0 : arr.x_rank[i - 1] + (K::compare_x(arr.points[i - 1], arr.points[i]) != Sign::zero);
+    arr.x_rank.resize(arr.points.size());
+    for (std::size_t i = 0; i < arr.points.size(); ++i) {
+      arr.x_rank[i] = i == 0 ? 0 : arr.x_rank[i - 1] + (K::compare_x(arr.points[i - 1], arr.points[i]) != Sign::zero);
+    }
   }
 
   // A and B are made vertex-complete and split into cycles independently (on two threads

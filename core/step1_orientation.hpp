@@ -6,7 +6,7 @@
 #pragma once
 
 #include <algorithm>
-#include <unordered_map>
+#include <vector>
 
 #include "core/arrangement.hpp"
 #include "core/locator.hpp"
@@ -30,16 +30,50 @@ bool is_counterclockwise(const Arrangement<K>& arr, const std::vector<int>& cycl
   return K::orient2d(arr.points[prev], arr.points[cycle[m]], arr.points[next]) == Sign::positive;
 }
 
+// How many of a polygon's edges coincide with each as sets {u, w}: entries chained from
+// their smaller point (a point has few edges), where a hash map cost a node per edge.
+class EdgeCounts {
+ public:
+  explicit EdgeCounts(std::size_t num_points) : head_(num_points, -1) {}
+
+  void add(int u, int w) {
+    const int lo = std::min(u, w);
+    const int hi = std::max(u, w);
+    for (int k = head_[lo]; k >= 0; k = next_[k]) {
+      if (hi_[k] == hi) {
+        ++count_[k];
+        return;
+      }
+    }
+    next_.push_back(head_[lo]);
+    hi_.push_back(hi);
+    count_.push_back(1);
+    head_[lo] = static_cast<int>(hi_.size()) - 1;
+  }
+  int count(int u, int w) const {
+    const int lo = std::min(u, w);
+    const int hi = std::max(u, w);
+    for (int k = head_[lo]; k >= 0; k = next_[k]) {
+      if (hi_[k] == hi) return count_[k];
+    }
+    return 0;
+  }
+
+ private:
+  std::vector<int> head_;
+  std::vector<int> next_, hi_, count_;
+};
+
 // The query for the parity of the number of cycles of `poly` whose FAR contains the points
 // just inside cycle c (the cycle itself included): odd for cycles at even nesting depth.
 inline LocatorQuery depth_query(const PreparedPolygon& poly, std::size_t c,
-                                const std::unordered_map<std::uint64_t, int>& edge_count, bool ccw) {
+                                const EdgeCounts& edge_count, bool ccw) {
   const auto& cycle = poly.cycles[c];
   const auto n = cycle.size();
   // An edge no other edge coincides with, so that only ancestors contain the points beside it.
   std::size_t k = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (edge_count.at(segment_key(cycle[i], cycle[(i + 1) % n])) == 1) {
+    if (edge_count.count(cycle[i], cycle[(i + 1) % n]) == 1) {
       k = i;
       break;
     }
@@ -59,12 +93,12 @@ void normalize_orientations(Arrangement<K>& arr, Operation op, unsigned threads 
     PreparedPolygon& poly = arr.polygon[pi];
     // A polygon with one cycle has it at depth 0; only nested parts need the ray test.
     const bool single = poly.cycles.size() == 1;
-    std::unordered_map<std::uint64_t, int> edge_count;
+    detail::EdgeCounts edge_count(single ? 0 : arr.points.size());
     std::vector<Edge> edges;
     if (!single) {
       for (const auto& cycle : poly.cycles) {
         for (std::size_t i = 0; i < cycle.size(); ++i) {
-          ++edge_count[segment_key(cycle[i], cycle[(i + 1) % cycle.size()])];
+          edge_count.add(cycle[i], cycle[(i + 1) % cycle.size()]);
           edges.push_back({cycle[i], cycle[(i + 1) % cycle.size()]});
         }
       }

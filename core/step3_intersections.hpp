@@ -134,7 +134,7 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
   run_tasks(threads_for(ea.size() + eb.size(), threads), 2, [&](std::size_t g) {
     PreparedPolygon& poly = arr.polygon[g];
     EdgeInsertions& ins = inserted[g];
-    ins.group();
+    ins.group(static_cast<int>(poly.edges.size()));
     // A local vector: its end stays in a register. Fragments are made in place
     // (detail::add_fragment), four times faster here than push_back of a braced temporary.
     std::vector<Fragment> fragments;

@@ -36,6 +36,25 @@ TEST(apiErrors, CrossingEdgesNameBothEdgesWithTheirEndPoints) {
   }
 }
 
+// The edges are named by their own ring, whatever ring comes before them.
+TEST(apiErrors, CrossingEdgesOfALaterRingNameThatRing) {
+  const Polygon square{{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}}, PolygonType::island};
+  const Polygon shell_and_bow_tie{{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{3, 3}, {4, 3}, {3, 4}, {4, 4}}},
+                                  PolygonType::island};
+  try {
+    compute(shell_and_bow_tie, square, BooleanOptions{Operation::union_, true, "exact"});
+    ADD_FAILURE() << "accepted";
+  } catch (const CrossingEdges& e) {
+    EXPECT_EQ(e.polygon(), 0);
+    EXPECT_EQ(e.first().ring, 1);
+    EXPECT_EQ(e.second().ring, 1);
+    const bool order = e.first().from == 3;
+    EXPECT_EQ(order ? e.first().to : e.second().to, 0);
+    EXPECT_EQ(order ? e.second().from : e.first().from, 1);
+    EXPECT_EQ(order ? e.second().to : e.first().to, 2);
+  }
+}
+
 TEST(apiErrors, NonFiniteCoordinatesAreInvalidInput) {
   const Polygon bad{{{{0, 0}, {1, 0}, {0, std::numeric_limits<double>::infinity()}}}, PolygonType::island};
   EXPECT_THROW(compute(bad, Polygon{}, BooleanOptions{}), InvalidInput);

@@ -141,23 +141,33 @@ TEST(Prepare, NumberingByMergedRunsEqualsNumberingBySort) {
     expected.erase(std::unique(expected.begin(), expected.end(),
                                [](const Point& u, const Point& w) { return compare_xy<K>(u, w) == Sign::zero; }),
                    expected.end());
-    std::vector<Point> points;
-    std::vector<int> id_of(flat.size(), -1);
     const std::array<const Polygon*, 2> in{&poly[0], &poly[1]};
-    ASSERT_TRUE(detail::number_points_by_runs<K>(in, 1000, points, id_of));
-    ASSERT_EQ(points.size(), expected.size()) << "iter " << iter;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      EXPECT_EQ(compare_xy<K>(points[i], expected[i]), Sign::zero) << "iter " << iter << " point " << i;
-    }
-    for (std::size_t k = 0; k < flat.size(); ++k) {
-      ASSERT_GE(id_of[k], 0) << "iter " << iter << " vertex " << k;
-      EXPECT_EQ(compare_xy<K>(points[id_of[k]], flat[k]), Sign::zero) << "iter " << iter << " vertex " << k;
+    {
+      std::vector<Point> points;
+      std::vector<int> x_rank;
+      std::vector<int> id_of(flat.size(), -1);
+      ASSERT_TRUE(detail::number_points_by_runs<K>(in, 1000, points, x_rank, id_of));
+      ASSERT_EQ(points.size(), expected.size()) << "iter " << iter;
+      ASSERT_EQ(x_rank.size(), expected.size()) << "iter " << iter;
+      int rank = 0;
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        EXPECT_EQ(compare_xy<K>(points[i], expected[i]), Sign::zero) << "iter " << iter << " point " << i;
+        if (i > 0 && expected[i - 1].x != expected[i].x) ++rank;
+        EXPECT_EQ(x_rank[i], rank) << "iter " << iter << " point " << i;
+      }
+      for (std::size_t k = 0; k < flat.size(); ++k) {
+        ASSERT_GE(id_of[k], 0) << "iter " << iter << " vertex " << k;
+        EXPECT_EQ(compare_xy<K>(points[id_of[k]], flat[k]), Sign::zero)
+            << "iter " << iter << " vertex " << k;
+      }
     }
     // With too few runs allowed it declines and leaves its outputs alone.
     std::vector<Point> untouched;
+    std::vector<int> untouched_ranks;
     std::vector<int> ids(flat.size(), -1);
-    EXPECT_FALSE(detail::number_points_by_runs<K>(in, 0, untouched, ids));
+    EXPECT_FALSE(detail::number_points_by_runs<K>(in, 0, untouched, untouched_ranks, ids));
     EXPECT_TRUE(untouched.empty());
+    EXPECT_TRUE(untouched_ranks.empty());
     EXPECT_TRUE(std::all_of(ids.begin(), ids.end(), [](int v) { return v == -1; }));
   }
 }
