@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/buckets.hpp"
+
 namespace mk {
 
 class EdgeInsertions {
@@ -39,11 +41,9 @@ class EdgeInsertions {
       std::stable_sort(list_.begin(), list_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
       return;
     }
-    std::vector<std::size_t> start(static_cast<std::size_t>(num_edges) + 1, 0);
-    for (const auto& p : list_) ++start[static_cast<std::size_t>(p.first) + 1];
-    for (std::size_t e = 1; e < start.size(); ++e) start[e] += start[e - 1];
+    const Buckets b = bucket_by(list_.size(), static_cast<std::size_t>(num_edges), [&](std::size_t i) { return list_[i].first; });
     std::vector<std::pair<int, int>> by_edge(list_.size());
-    for (const auto& p : list_) by_edge[start[p.first]++] = p;
+    for (std::size_t k = 0; k < b.order.size(); ++k) by_edge[k] = list_[static_cast<std::size_t>(b.order[k])];
     list_ = std::move(by_edge);
   }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/arrangement.hpp"
+#include "core/buckets.hpp"
 #include "predicates/directions.hpp"
 
 namespace mk {
@@ -76,11 +77,10 @@ class FragmentEndTable {
     // at most of its vertices), else a comparison sort. Each group's codes are sorted below,
     // so the order of a vertex's visits does not matter.
     if (grouped.size() >= static_cast<std::size_t>(num_vertices) / 16) {
-      std::vector<int> start(static_cast<std::size_t>(num_vertices) + 1, 0);
-      for (const Visit& g : grouped) ++start[static_cast<std::size_t>(g.vertex) + 1];
-      for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+      const Buckets b = bucket_by(grouped.size(), static_cast<std::size_t>(num_vertices),
+                                  [&](std::size_t i) { return grouped[i].vertex; });
       std::vector<Visit> by_vertex(grouped.size());
-      for (const Visit& g : grouped) by_vertex[static_cast<std::size_t>(start[static_cast<std::size_t>(g.vertex)]++)] = g;
+      for (std::size_t k = 0; k < b.order.size(); ++k) by_vertex[k] = grouped[static_cast<std::size_t>(b.order[k])];
       grouped = std::move(by_vertex);
     } else {
       std::sort(grouped.begin(), grouped.end());

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/arrangement.hpp"
+#include "core/buckets.hpp"
 #include "predicates/ray.hpp"
 
 namespace mk {
@@ -298,23 +299,14 @@ class WindingLocator {
     const int n_points = arr_.num_points();
     const int m = static_cast<int>(edges_.size());
     // Edges by lo and by hi, queries by the point after which they are asked (counting sorts).
-    const auto bucket = [&](int count, auto&& key) {
-      std::vector<int> begin(static_cast<std::size_t>(n_points) + 2, 0);
-      for (int i = 0; i < count; ++i) ++begin[key(i) + 1];
-      for (std::size_t k = 1; k < begin.size(); ++k) begin[k] += begin[k - 1];
-      std::vector<int> items(static_cast<std::size_t>(count));
-      std::vector<int> fill(begin.begin(), begin.end() - 1);
-      for (int i = 0; i < count; ++i) items[fill[key(i)]++] = i;
-      return std::pair(std::move(begin), std::move(items));
-    };
-    const auto [lo_begin, by_lo] = bucket(m, [&](int e) { return lo(e); });
-    const auto [hi_begin, by_hi] = bucket(m, [&](int e) { return hi(e); });
+    const std::size_t keys = static_cast<std::size_t>(n_points) + 1;
+    const Buckets by_lo = bucket_by(edges_.size(), keys, [&](std::size_t e) { return lo(static_cast<int>(e)); });
+    const Buckets by_hi = bucket_by(edges_.size(), keys, [&](std::size_t e) { return hi(static_cast<int>(e)); });
     // Position v (after v) or v - 1 (before v); -1 (before every point) is bucket 0 by the +1.
-    const auto position = [&](int i) {
-      const LocatorQuery& q = queries[static_cast<std::size_t>(i)];
+    const Buckets by_position = bucket_by(queries.size(), keys, [&](std::size_t i) {
+      const LocatorQuery& q = queries[i];
       return (q.t > q.v ? q.v : q.v - 1) + 1;
-    };
-    const auto [q_begin, by_position] = bucket(static_cast<int>(queries.size()), position);
+    });
 
     detail::BlockedOrder line;
     const Below below_of{this};
@@ -322,17 +314,17 @@ class WindingLocator {
     const auto contribution = [&](int e) { return parity ? 1 : (edges_[e].src > edges_[e].dst ? 1 : -1); };
     std::vector<int> entering;
     for (int p = 0; p < n_points; ++p) {
-      for (int i = hi_begin[p]; i < hi_begin[p + 1]; ++i) line.erase(by_hi[i], below_of);
+      for (int i = by_hi.begin[p]; i < by_hi.begin[p + 1]; ++i) line.erase(by_hi.order[i], below_of);
       // Edges entering at p lie next to each other on the line: inserted from the top, each
       // finds the edge just above it already there, and takes its value from it.
-      entering.assign(by_lo.begin() + lo_begin[p], by_lo.begin() + lo_begin[p + 1]);
+      entering.assign(by_lo.order.begin() + by_lo.begin[p], by_lo.order.begin() + by_lo.begin[p + 1]);
       if (entering.size() > 1) std::sort(entering.begin(), entering.end(), [&](int a, int b) { return is_below(b, a); });
       for (const int e : entering) {
         const int up = line.insert(e, below_of);
         below[e] = contribution(e) + (up < 0 ? 0 : below[up]);
       }
-      for (int i = q_begin[p + 1]; i < q_begin[p + 2]; ++i) {
-        const int qi = by_position[i];
+      for (int i = by_position.begin[p + 1]; i < by_position.begin[p + 2]; ++i) {
+        const int qi = by_position.order[i];
         const int e = line.lower_bound(queries[qi], below_of);  // the first edge above the point
         out[qi] = e < 0 ? 0 : below[e];
       }

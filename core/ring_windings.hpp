@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/arrangement.hpp"
+#include "core/buckets.hpp"
 #include "core/locator.hpp"
 #include "core/prepare.hpp"
 #include "predicates/directions.hpp"
@@ -73,14 +74,9 @@ AngularIncidence sort_around_vertices(const Arrangement<K>& arr, const std::vect
   const int n = static_cast<int>(half.size());
   // By vertex in linear time (a counting sort on the point id), then each vertex's few
   // half-edges by count and angle; a vertex where one cycle merely passes needs no sorting.
-  std::vector<int> begin(arr.points.size() + 1, 0);
-  for (const HalfEdge& h : half) ++begin[static_cast<std::size_t>(h.at) + 1];
-  for (std::size_t v = 1; v < begin.size(); ++v) begin[v] += begin[v - 1];
-  inc.order.resize(half.size());
-  {
-    std::vector<int> fill(begin.begin(), begin.end() - 1);
-    for (int i = 0; i < n; ++i) inc.order[static_cast<std::size_t>(fill[static_cast<std::size_t>(half[i].at)]++)] = i;
-  }
+  Buckets by_vertex = bucket_by(half.size(), arr.points.size(), [&](std::size_t i) { return half[i].at; });
+  const std::vector<int>& begin = by_vertex.begin;
+  inc.order = std::move(by_vertex.order);
   for (std::size_t v = 0; v + 1 < begin.size(); ++v) {
     const auto b = inc.order.begin() + begin[v];
     const auto e = inc.order.begin() + begin[v + 1];

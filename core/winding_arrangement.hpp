@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/arrangement.hpp"
+#include "core/buckets.hpp"
 #include "core/edge_insertions.hpp"
 #include "core/error.hpp"
 #include "core/pairs.hpp"
@@ -79,14 +80,10 @@ class VertexMerge {
 // sort of all the pieces cost a tenth of a union-all of many rings.
 template <class Piece>
 std::vector<int> order_by_key(const std::vector<Piece>& pieces, int num_vertices) {
-  std::vector<int> start(static_cast<std::size_t>(num_vertices) + 1, 0);
-  for (const Piece& p : pieces) ++start[static_cast<std::size_t>(std::min(p.from, p.to)) + 1];
-  for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
-  std::vector<int> order(pieces.size());
-  {
-    std::vector<int> next(start.begin(), start.end() - 1);
-    for (std::size_t k = 0; k < pieces.size(); ++k) order[next[std::min(pieces[k].from, pieces[k].to)]++] = static_cast<int>(k);
-  }
+  Buckets by_vertex = bucket_by(pieces.size(), static_cast<std::size_t>(num_vertices),
+                                [&](std::size_t k) { return std::min(pieces[k].from, pieces[k].to); });
+  const std::vector<int>& start = by_vertex.begin;
+  std::vector<int> order = std::move(by_vertex.order);
   const auto before = [&](int x, int y) { return pieces[x].key != pieces[y].key ? pieces[x].key < pieces[y].key : x < y; };
   for (std::size_t v = 0; v + 1 < start.size(); ++v) {
     const auto first = order.begin() + start[v];
