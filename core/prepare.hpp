@@ -183,10 +183,20 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
 }
 
 // Appends q to `points` (distinct, in lexicographic order so far, q not smaller than the
-// last) unless it equals the last, and returns q's id.
+// last) unless it equals the last, with the rank of its x among the distinct x values, and
+// returns q's id.
 template <Kernel K>
-int append_distinct(std::vector<typename K::Point>& points, const typename K::Point& q) {
-  if (points.empty() || compare_xy<K>(points.back(), q) != Sign::zero) points.push_back(q);
+int append_distinct(std::vector<typename K::Point>& points, std::vector<int>& x_rank, const typename K::Point& q) {
+  if (points.empty()) {
+    x_rank.push_back(0);
+  } else if (K::compare_x(points.back(), q) != Sign::zero) {
+    x_rank.push_back(x_rank.back() + 1);
+  } else if (K::compare_y(points.back(), q) != Sign::zero) {
+    x_rank.push_back(x_rank.back());
+  } else {
+    return static_cast<int>(points.size()) - 1;
+  }
+  points.push_back(q);
   return static_cast<int>(points.size()) - 1;
 }
 
@@ -232,17 +242,7 @@ void merge_runs(std::vector<PointRun<typename K::Point>>& runs, std::vector<type
   x_rank.reserve(n);
   while (!order.empty()) {
     PointRun<P>& run = runs[order.front()];
-    if (points.empty()) {
-      points.push_back(run.key);
-      x_rank.push_back(0);
-    } else if (const Sign sx = K::compare_x(points.back(), run.key); sx != Sign::zero) {
-      points.push_back(run.key);
-      x_rank.push_back(x_rank.back() + 1);
-    } else if (K::compare_y(points.back(), run.key) != Sign::zero) {
-      points.push_back(run.key);
-      x_rank.push_back(x_rank.back());
-    }
-    id_of[run.ring_ref + run.pos] = static_cast<int>(points.size()) - 1;
+    id_of[run.ring_ref + run.pos] = append_distinct<K>(points, x_rank, run.key);
     run.pos += run.step;
     if (run.pos == run.end) {
       order.front() = order.back();
@@ -319,11 +319,8 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
     }
     std::sort(sorted.begin(), sorted.end(),
               [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; });
-    for (const auto& [q, input] : sorted) id_of[input] = detail::append_distinct<K>(arr.points, q);
-    arr.x_rank.resize(arr.points.size());
-    for (std::size_t i = 0; i < arr.points.size(); ++i) {
-      arr.x_rank[i] = i == 0 ? 0 : arr.x_rank[i - 1] + (K::compare_x(arr.points[i - 1], arr.points[i]) != Sign::zero);
-    }
+    arr.x_rank.reserve(total);
+    for (const auto& [q, input] : sorted) id_of[input] = detail::append_distinct<K>(arr.points, arr.x_rank, q);
   }
 
   // A and B are made vertex-complete and split into cycles independently (on two threads
