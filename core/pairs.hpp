@@ -61,10 +61,6 @@ namespace detail {
 struct Chain {
   int first = 0;  // range of segs_ (the chain's segments sorted by lo)
   int last = 0;
-  int lo = 0;  // leftmost and rightmost point ids
-  int hi = 0;
-  int y_min = 0;  // point ids of the lowest and highest ends
-  int y_max = 0;
   int group = 0;
   bool falling = false;  // the chain descends in y from lo to hi
 };
@@ -189,12 +185,8 @@ class CandidatePairs {
       if (!items_[start].forward) std::reverse(segs_.begin() + start, segs_.begin() + end);
       const Seg& head = segs_[start];
       const Seg& tail = segs_[end - 1];
-      c.lo = items_[head.item].lo;
-      c.hi = items_[tail.item].hi;
       // Monotone in y: the extreme ends are the chain's two ends.
-      c.falling = y_less(c.hi, c.lo);
-      c.y_min = c.falling ? c.hi : c.lo;
-      c.y_max = c.y_min == c.lo ? c.hi : c.lo;
+      c.falling = ky_less(tail.y_hi, head.y_lo);
       chains_.push_back(c);
       boxes_.push_back({head.x_lo, tail.x_hi, c.falling ? tail.y_hi : head.y_lo, c.falling ? head.y_lo : tail.y_hi});
     };
@@ -287,20 +279,20 @@ class CandidatePairs {
   }
 
   // The pivot along `axis`: the median of the low ends of up to 15 boxes spread over the set
-  // (an x-rank for x, a point id for y); see place().
+  // (an x-rank for x; for y the chain whose box's low end it is); see place().
   int choose_pivot(std::span<const int> s, int axis) const {
     std::array<int, 15> sample{};
     const std::size_t k = std::min<std::size_t>(sample.size(), s.size());
     for (std::size_t i = 0; i < k; ++i) {
-      const detail::Chain& c = chains_[s[k == 1 ? 0 : i * (s.size() - 1) / (k - 1)]];
-      sample[i] = axis == 0 ? xr(c.lo) : c.y_min;
+      const int c = s[k == 1 ? 0 : i * (s.size() - 1) / (k - 1)];
+      sample[i] = axis == 0 ? boxes_[c].x0 : c;
     }
     const auto mid = sample.begin() + static_cast<std::ptrdiff_t>(k / 2);
     if (axis == 0) {
       std::nth_element(sample.begin(), mid, sample.begin() + static_cast<std::ptrdiff_t>(k));
     } else {
       std::nth_element(sample.begin(), mid, sample.begin() + static_cast<std::ptrdiff_t>(k),
-                       [&](int u, int w) { return y_less(u, w); });
+                       [&](int u, int w) { return ky_less(boxes_[u].y0, boxes_[w].y0); });
     }
     return *mid;
   }
@@ -314,7 +306,7 @@ class CandidatePairs {
       if (c.x0 > pivot) return Place::above;
       return Place::across;
     }
-    const YKey p = ykey(pivot);
+    const YKey p = boxes_[pivot].y0;
     if (!ky_less(p, c.y1)) return Place::below;
     if (ky_less(p, c.y0)) return Place::above;
     return Place::across;
@@ -356,7 +348,7 @@ class CandidatePairs {
     return {below, above, along};
   }
 
-  // The bounding box of a set of chains: x-ranks and point ids of the lowest and highest y.
+  // The bounding box of a set of chains: x-ranks and the lowest and highest y (see Box).
   Box bounds(std::span<const int> s) const {
     Box b = boxes_[s[0]];
     for (const int i : s.subspan(1)) {
