@@ -82,7 +82,10 @@ BooleanOutput run(const BasicPolygon<P>& a, const BasicPolygon<P>& b, const Bool
   const auto t0 = std::chrono::steady_clock::now();
   BooleanResult<K> r;
   try {
-    if constexpr (std::is_same_v<P, Point>) {
+    if constexpr (std::is_same_v<P, typename K::Point>) {
+      // The kernel reads the input's own points (checked above): no copy of the input.
+      r = mk::detail::run_boolean_op<K>(a, b, opt, {});
+    } else if constexpr (std::is_same_v<P, Point>) {
       r = boolean_op<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b), opt);
     } else {
       r = boolean_op<K>(kernel_polygon<K>(a), kernel_polygon<K>(b), opt);

@@ -8,7 +8,8 @@
 # Usage: fuzz/run.sh [seconds per target, default 20]
 # Exit status: 0 when no target crashed, leaked, hung or hit undefined behaviour; 1 otherwise.
 # Crash inputs are kept in $MK_FUZZ_ARTIFACTS (default /tmp/mkbool-fuzz-artifacts);
-# MK_FUZZ_TARGETS="fuzz_wkt ..." runs a subset; CXX_FUZZ overrides clang++.
+# MK_FUZZ_TARGETS="fuzz_wkt ..." runs a subset; CXX_FUZZ overrides clang++; MK_FUZZ_JOBS
+# sets how many compilations and targets run at once (default: one per core).
 set -euo pipefail
 
 seconds="${1:-20}"
@@ -21,9 +22,13 @@ mkdir -p "$artifacts"
 
 # -fno-sanitize-recover: undefined behaviour aborts, so libFuzzer reports it as a crash.
 # -ffp-contract=off and -frounding-math as the CMake build gives the exact predicates.
-flags=(-std=c++20 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
-       -fno-omit-frame-pointer -ffp-contract=off -frounding-math -I "$root")
+# Every source is compiled once with coverage instrumentation (fuzzer-no-link), the sources
+# on every core at once, largest first; each target is then linked with libFuzzer's main.
+cflags=(-std=c++20 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
+        -fno-omit-frame-pointer -ffp-contract=off -frounding-math -I "$root")
+lflags=(-fsanitize=fuzzer,address,undefined)
 libs=(-lgmpxx -lgmp -lmpfr)
+jobs="${MK_FUZZ_JOBS:-$(nproc)}"
 
 declare -A sources=(
   [fuzz_wkt]="io/wkt_reader.cpp io/wkt_writer.cpp io/format.cpp io/geojson_reader.cpp io/geojson_writer.cpp io/native_json.cpp io/parts.cpp io/ring_rules.cpp"
@@ -32,23 +37,67 @@ declare -A sources=(
   [fuzz_wkb]="io/wkb_reader.cpp io/wkb_writer.cpp io/ring_rules.cpp"
   [fuzz_operation]="api/mkbool.cpp api/fill.cpp io/wkt_writer.cpp io/geojson_writer.cpp io/native_json.cpp io/svg.cpp io/ring_rules.cpp"
 )
+read -r -a targets <<< "${MK_FUZZ_TARGETS:-fuzz_wkt fuzz_geojson fuzz_native_json fuzz_wkb fuzz_operation}"
 
-failed=()
-for target in ${MK_FUZZ_TARGETS:-fuzz_wkt fuzz_geojson fuzz_native_json fuzz_wkb fuzz_operation}; do
-  echo "== building $target"
-  files=("$root/fuzz/$target.cpp")
-  for s in ${sources[$target]}; do files+=("$root/$s"); done
-  "$cxx" "${flags[@]}" "${files[@]}" "${libs[@]}" -o "$work/$target"
+object() { echo "$work/obj/${1//\//_}.o"; }
 
-  echo "== running $target for ${seconds}s"
+# Runs "$@" for each line of standard input as its last argument, at most $jobs at a time;
+# fails when any run failed.
+parallel_each() {
+  local running=0 status=0 item
+  while read -r item; do
+    "$@" "$item" &
+    running=$((running + 1))
+    if ((running >= jobs)); then
+      wait -n || status=1
+      running=$((running - 1))
+    fi
+  done
+  while ((running > 0)); do
+    wait -n || status=1
+    running=$((running - 1))
+  done
+  return "$status"
+}
+
+compile_unit() { "$cxx" "${cflags[@]}" -c "$root/$1" -o "$(object "$1")"; }
+
+echo "== building ${targets[*]}"
+mkdir -p "$work/obj"
+units=()
+for target in "${targets[@]}"; do
+  units+=("fuzz/$target.cpp")
+  for s in ${sources[$target]}; do units+=("$s"); done
+done
+printf '%s\n' "${units[@]}" | sort -u | while read -r u; do echo "$(stat -c %s "$root/$u") $u"; done \
+  | sort -rn | cut -d' ' -f2 | parallel_each compile_unit
+for target in "${targets[@]}"; do
+  objects=("$(object "fuzz/$target.cpp")")
+  for s in ${sources[$target]}; do objects+=("$(object "$s")"); done
+  "$cxx" "${lflags[@]}" "${objects[@]}" "${libs[@]}" -o "$work/$target"
+done
+
+# Runs one target; its log and exit status are left in $work.
+run_target() {
+  local target="$1"
   # New inputs go to a scratch corpus; the seeds in the repository are only read.
   mkdir -p "$work/corpus_$target"
   if [ "$target" = fuzz_operation ] && [ -x "$root/build/bin/fuzz_seed_corpus" ]; then
-    "$root/build/bin/fuzz_seed_corpus" "$work/corpus_$target"
+    "$root/build/bin/fuzz_seed_corpus" "$work/corpus_$target" >/dev/null
   fi
-  if ! "$work/$target" -max_len=4096 -max_total_time="$seconds" -timeout=10 \
-       -artifact_prefix="$artifacts/$target-" -print_final_stats=1 \
-       "$work/corpus_$target" "$root/fuzz/corpus/$target" 2>"$work/$target.log"; then
+  local rc=0
+  "$work/$target" -max_len=4096 -max_total_time="$seconds" -timeout=10 \
+    -artifact_prefix="$artifacts/$target-" -print_final_stats=1 \
+    "$work/corpus_$target" "$root/fuzz/corpus/$target" 2>"$work/$target.log" || rc=$?
+  echo "$rc" > "$work/$target.rc"
+}
+
+echo "== running each target for ${seconds}s, $jobs at a time"
+printf '%s\n' "${targets[@]}" | parallel_each run_target || true
+failed=()
+for target in "${targets[@]}"; do
+  echo "== $target"
+  if [ "$(cat "$work/$target.rc" 2>/dev/null || echo 1)" != 0 ]; then
     tail -n 60 "$work/$target.log"
     failed+=("$target")
   else
