@@ -31,7 +31,7 @@ rm -rf "$site"
 
 section "AddressSanitizer + UndefinedBehaviorSanitizer"
 # The benchmarks and the headers' layer check (compile-only) were built in Release above.
-cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Sanitize "-DCMAKE_CXX_FLAGS_SANITIZE=-O1 -DNDEBUG" -DMK_SANITIZE=ON -DMK_WERROR=ON "-DMK_SKIP_PARTS=bench" -DMK_CHECK_LAYERS=OFF >/dev/null
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Sanitize "-DCMAKE_CXX_FLAGS_SANITIZE=-Og -DNDEBUG" -DMK_SANITIZE=ON -DMK_WERROR=ON "-DMK_SKIP_PARTS=bench" -DMK_CHECK_LAYERS=OFF >/dev/null
 cmake --build build-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-asan -j "$jobs" --output-on-failure -LE slow
