@@ -10,12 +10,14 @@
 #include <array>
 #include <span>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "kernel/kernel.hpp"
 
 namespace mk {
@@ -84,11 +86,12 @@ template <Kernel K>
 class CandidatePairs {
  public:
   // `x_rank` gives each point id the rank of its x among the distinct x values.
+  // The chains are made on up to `threads` threads (the same chains on any number).
   CandidatePairs(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
-                 const std::vector<SweepItem>& items, bool bipartite, PairSearch search)
+                 const std::vector<SweepItem>& items, bool bipartite, PairSearch search, unsigned threads = 1)
       : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite), search_(search) {
     if (search_ == PairSearch::sweep) {
-      build_chains();
+      build_chains(threads);
       plan();
     }
   }
@@ -128,6 +131,7 @@ class CandidatePairs {
 
   static constexpr std::size_t kDirect = 48;  // sets this small (or pairs of sets) are paired directly
   static constexpr int kMaxDepth = 96;
+  static constexpr int kPrefetch = 32;  // items ahead whose points build_chains asks for
 
   int xr(int id) const { return x_rank_[id]; }
   bool y_less(int u, int w) const { return K::compare_y(pts_[u], pts_[w]) == Sign::negative; }
@@ -172,28 +176,61 @@ class CandidatePairs {
   // Cuts the items into chains and makes the segments (in chain order) and the chains'
   // boxes, in one pass over the items: a ring's consecutive items share a point, whose
   // x-rank and y are read once (reading them was most of this pass).
-  void build_chains() {
+  // A ring's first item always starts a chain, so the items are cut in two at the ring start
+  // nearest their middle and each half is made on its own thread, then joined.
+  void build_chains(unsigned threads) {
     const int n = static_cast<int>(items_.size());
-    segs_.resize(items_.size());
-    int start = 0;
+    segs_ = std::make_unique_for_overwrite<Seg[]>(items_.size());  // each written below: no zeroing pass
+    int cut = n / 2;
+    while (cut < n && items_[cut].continues) ++cut;
+    if (threads_for(items_.size(), threads) < 2 || cut == 0 || cut == n) {
+      build_chains_in(0, n, chains_, boxes_);
+      return;
+    }
+    std::vector<detail::Chain> later_chains;
+    std::vector<Box> later_boxes;
+    run_tasks(2, 2, [&](std::size_t half) {
+      if (half == 0) {
+        build_chains_in(0, cut, chains_, boxes_);
+      } else {
+        build_chains_in(cut, n, later_chains, later_boxes);
+      }
+    });
+    chains_.insert(chains_.end(), later_chains.begin(), later_chains.end());
+    boxes_.insert(boxes_.end(), later_boxes.begin(), later_boxes.end());
+  }
+
+  // The chains of items first .. n-1 (first a ring's first item), appended to `chains` and
+  // `boxes`; their segments are written to segs_ at the items' places.
+  void build_chains_in(int first, int n, std::vector<detail::Chain>& chains, std::vector<Box>& boxes) {
+    int start = first;
     int start_course = 0;
     const auto close = [&](int end) {
       detail::Chain c;
       c.first = start;
       c.last = end;
       c.group = items_[start].group;
-      if (!items_[start].forward) std::reverse(segs_.begin() + start, segs_.begin() + end);
+      if (!items_[start].forward) std::reverse(segs_.get() + start, segs_.get() + end);
       const Seg& head = segs_[start];
       const Seg& tail = segs_[end - 1];
       // Monotone in y: the extreme ends are the chain's two ends.
       c.falling = ky_less(tail.y_hi, head.y_lo);
-      chains_.push_back(c);
-      boxes_.push_back({head.x_lo, tail.x_hi, c.falling ? tail.y_hi : head.y_lo, c.falling ? head.y_lo : tail.y_hi});
+      chains.push_back(c);
+      boxes.push_back({head.x_lo, tail.x_hi, c.falling ? tail.y_hi : head.y_lo, c.falling ? head.y_lo : tail.y_hi});
     };
     int prev_dst = -1;  // the previous item's ring successor, with its x-rank and y
     int prev_dst_x = 0;
     YKey prev_dst_y{};
-    for (int i = 0; i < n; ++i) {
+    for (int i = first; i < n; ++i) {
+      if (i + kPrefetch < n) {
+        // The ring successor's x-rank and y lie anywhere in the point arrays (ids follow
+        // lexicographic order, not the ring): asked for a few items ahead, the reads
+        // overlap instead of each waiting for memory.
+        const SweepItem& ahead = items_[i + kPrefetch];
+        const int id = ahead.forward ? ahead.hi : ahead.lo;
+        __builtin_prefetch(&x_rank_[id]);
+        __builtin_prefetch(&pts_[id]);
+      }
       const SweepItem& it = items_[i];
       const int src = it.forward ? it.lo : it.hi;
       const int dst = it.forward ? it.hi : it.lo;
@@ -218,13 +255,13 @@ class CandidatePairs {
       const int kc = course(it, k);
       const bool joins = i > start && i - start < detail::kMaxChain && it.continues && it.group == items_[i - 1].group &&
                          kc == start_course;
-      if (i > 0 && !joins) {
+      if (i > first && !joins) {
         close(i);
         start = i;
       }
       if (i == start) start_course = kc;
     }
-    if (n > 0) close(n);
+    if (n > first) close(n);
   }
 
   // The first levels of the partition, each subproblem left at the last level a part.
@@ -496,8 +533,8 @@ class CandidatePairs {
   std::pair<int, int> window(int xc, int oc) const {
     const detail::Chain& x = chains_[xc];
     const Box& other = boxes_[oc];
-    const Seg* const first = segs_.data() + x.first;
-    const Seg* const last = segs_.data() + x.last;
+    const Seg* const first = segs_.get() + x.first;
+    const Seg* const last = segs_.get() + x.last;
     const Seg* b = std::partition_point(first, last, [&](const Seg& k) { return k.x_hi < other.x0; });
     const Seg* e = std::partition_point(b, last, [&](const Seg& k) { return k.x_lo <= other.x1; });
     if (x.falling) {  // descending in y: a segment spans y(hi) .. y(lo)
@@ -507,7 +544,7 @@ class CandidatePairs {
       b = std::partition_point(b, e, [&](const Seg& k) { return ky_less(k.y_hi, other.y0); });
       e = std::partition_point(b, e, [&](const Seg& k) { return !ky_less(other.y1, k.y_lo); });
     }
-    return {static_cast<int>(b - segs_.data()), static_cast<int>(e - segs_.data())};
+    return {static_cast<int>(b - segs_.get()), static_cast<int>(e - segs_.get())};
   }
 
   bool y_overlap(const Seg& a, const Seg& b) const {
@@ -557,7 +594,7 @@ class CandidatePairs {
   PairSearch search_;
   std::vector<detail::Chain> chains_;
   std::vector<Box> boxes_;  // per chain
-  std::vector<Seg> segs_;   // in chain order (a chain's segments by x)
+  std::unique_ptr<Seg[]> segs_;  // one per item, in chain order (a chain's segments by x)
   mutable std::vector<Task> tasks_;
 };
 

@@ -101,7 +101,7 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
   // edges, by edge index, and the first proper crossing. Of the proper crossings, the error
   // names the one met first walking the rings: the first edge (in input order) that crosses
   // an earlier one, and the earliest of those, whatever order the search finds them in.
-  CandidatePairs<K> pairs(pts, x_rank, items, false, search);
+  CandidatePairs<K> pairs(pts, x_rank, items, false, search, threads);
   struct Found {
     EdgeInsertions inserted;
     std::pair<int, int> crossing{-1, -1};

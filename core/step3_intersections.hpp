@@ -90,7 +90,7 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
       std::vector<Crossing> crossings;
       std::array<EdgeInsertions, 2> inserted;
     };
-    CandidatePairs<K> pairs(pts, arr.x_rank, items, true, search);
+    CandidatePairs<K> pairs(pts, arr.x_rank, items, true, search, threads);
     std::vector<Found> found(pairs.parts());
     run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
       Found& out = found[part];

@@ -6,6 +6,7 @@
 // Preconditions: none; seeds are printed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -280,6 +281,29 @@ std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> large_inputs() 
   };
   out.push_back({"star", {star(9000, 0, 0), star(9000, 32, 0)}});
   return out;
+}
+
+// The chains are made in two halves on two threads (cut at a ring's start) once the items
+// are many: the parts and their pairs must come out as on one thread, in the same order.
+TEST(CandidatePairs, SamePairsInTheSameOrderOnOneAndTwoThreads) {
+  for (const auto& [name, inputs] : large_inputs()) {
+    const Items s = items_of(inputs.first, inputs.second);
+    ASSERT_GE(s.items.size(), kParallelWork) << name << ": too few items to make the chains on two threads";
+    for (const bool bipartite : {false, true}) {
+      std::vector<std::vector<std::pair<int, int>>> runs;
+      for (const unsigned threads : {1u, 2u}) {
+        CandidatePairs<K> pairs(s.pts, s.x_rank, s.items, bipartite, PairSearch::sweep, threads);
+        std::vector<std::pair<int, int>> all;
+        for (std::size_t part = 0; part < pairs.parts(); ++part) {
+          pairs.for_each_in_part(part, [&](int a, int b) { all.emplace_back(a, b); });
+          all.emplace_back(-1, static_cast<int>(part));  // where each part ends
+        }
+        runs.push_back(std::move(all));
+      }
+      EXPECT_GT(std::count_if(runs[0].begin(), runs[0].end(), [](const auto& p) { return p.first >= 0; }), 0) << name;
+      EXPECT_EQ(runs[0], runs[1]) << name << (bipartite ? ", bipartite" : "");
+    }
+  }
 }
 
 TEST(Threads, ResultsAreTheSameBitForBitOnAnyNumberOfThreads) {
