@@ -176,8 +176,8 @@ class CandidatePairs {
   // Cuts the items into chains and makes the segments (in chain order) and the chains'
   // boxes, in one pass over the items: a ring's consecutive items share a point, whose
   // x-rank and y are read once (reading them was most of this pass).
-  // A ring's first item always starts a chain, so the items are cut in two at the ring start
-  // nearest their middle and each half is made on its own thread, then joined.
+  // A ring's first item always starts a chain, so the items are cut in two at the first ring
+  // start from their middle on, and each half is made on its own thread, then joined.
   void build_chains(unsigned threads) {
     const int n = static_cast<int>(items_.size());
     segs_ = std::make_unique_for_overwrite<Seg[]>(items_.size());  // each written below: no zeroing pass
