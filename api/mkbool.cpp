@@ -72,21 +72,17 @@ BooleanOutput run(const BasicPolygon<P>& a, const BasicPolygon<P>& b, const Bool
   const Options opt{o.op, o.regular, o.sorted_ef ? EfOrganisation::sorted : EfOrganisation::hash,
                     o.all_pairs ? PairSearch::all_pairs : PairSearch::sweep, o.threads};
   if (!o.grid.empty()) (void)SnapGrid::parse(o.grid);  // std::invalid_argument before any work
-  if constexpr (std::is_same_v<P, Point>) {
-    validate_coordinates(a, "A");
-    validate_coordinates(b, "B");
-  } else {
+  // Doubles are checked by boolean_op itself, which copies them only into a kernel point type
+  // of its own (the rational kernels'); the other kernels read the input's points.
+  if constexpr (!std::is_same_v<P, Point>) {
     validate_exact_coordinates(a, "A");
     validate_exact_coordinates(b, "B");
   }
   const auto t0 = std::chrono::steady_clock::now();
   BooleanResult<K> r;
   try {
-    if constexpr (std::is_same_v<P, typename K::Point>) {
-      // The kernel reads the input's own points (checked above): no copy of the input.
-      r = mk::detail::run_boolean_op<K>(a, b, opt, {});
-    } else if constexpr (std::is_same_v<P, Point>) {
-      r = boolean_op<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b), opt);
+    if constexpr (std::is_same_v<P, Point>) {
+      r = boolean_op<K>(a, b, opt);
     } else {
       r = boolean_op<K>(kernel_polygon<K>(a), kernel_polygon<K>(b), opt);
     }

@@ -61,5 +61,26 @@ TEST(apiErrors, NonFiniteCoordinatesAreInvalidInput) {
   EXPECT_THROW(compute(Polygon{}, Polygon{}, BooleanOptions{.kernel = "magic"}), std::invalid_argument);
 }
 
+// Every kernel checks the doubles (those that read the input's points without a copy as well
+// as the rational ones, which convert them), naming the polygon, ring and vertex.
+TEST(apiErrors, EveryKernelNamesTheNonFiniteVertex) {
+  const Polygon good{{{{0, 0}, {1, 0}, {0, 1}}}, PolygonType::island};
+  for (const double bad_value : {std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::infinity()}) {
+    Polygon bad{{{{0, 0}, {1, 0}, {0, 1}}, {{5, 5}, {6, 5}, {5, bad_value}}}, PolygonType::island};
+    for (const auto kernel : kernel_names()) {
+      SCOPED_TRACE(std::string(kernel));
+      for (const bool bad_is_b : {false, true}) {
+        try {
+          (void)compute(bad_is_b ? good : bad, bad_is_b ? bad : good, BooleanOptions{.kernel = std::string(kernel)});
+          ADD_FAILURE() << "no error";
+        } catch (const InvalidInput& e) {
+          EXPECT_EQ(std::string(e.what()),
+                    std::string("polygon ") + (bad_is_b ? "B" : "A") + ", ring 1, vertex 2: coordinate is not finite");
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mk
