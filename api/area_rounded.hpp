@@ -125,6 +125,30 @@ inline std::optional<double> decide_half(std::span<const double> sum, double bou
   return std::nullopt;
 }
 
+// Adds s (x_i y_i+1 - x_i+1 y_i) over one cycle's consecutive vertices to `sum` and their
+// bounds to `bound`, each vertex approximated once as the walk reaches it (no array of
+// approximations: on large results its allocation, page faults and copies cost more than
+// the sum). False when a vertex is out of the filter's range: magnitudes beyond 2^450 could
+// overflow the products, and the exact area decides.
+template <Kernel K>
+bool add_cycle(const BooleanResult<K>& r, const std::vector<int>& ids, double s, CompensatedSum& sum,
+               double& bound) {
+  const auto approx = [&r](int id, Approx& a) {
+    a = approximate(r.vertex(id));
+    return a.ok && std::fabs(a.xh) < 0x1p450 && std::fabs(a.yh) < 0x1p450;
+  };
+  Approx first, prev, cur;
+  if (!approx(ids[0], first)) return false;
+  prev = first;
+  for (std::size_t i = 1; i < ids.size(); ++i) {
+    if (!approx(ids[i], cur)) return false;
+    bound += add_cross(sum, prev, cur, s);
+    prev = cur;
+  }
+  bound += add_cross(sum, prev, first, s);
+  return true;
+}
+
 }  // namespace area_detail
 
 // The area rounded to the nearest double (ties to even; +-infinity beyond the double
@@ -136,40 +160,29 @@ std::optional<double> rounded_area(const BooleanResult<K>& r) {
   CompensatedSum sum;
   double bound = 0;
   bool ok = true;
-  std::vector<Approx> v;
   for (const auto& c : r.cycles) {
     if (c.vertices.size() < 3) continue;
-    v.clear();
-    for (const int id : c.vertices) {
-      v.push_back(approximate(r.vertex(id)));
-      const Approx& a = v.back();
-      // Magnitudes beyond 2^450 could overflow the products: the exact area decides.
-      if (!a.ok || !(std::fabs(a.xh) < 0x1p450) || !(std::fabs(a.yh) < 0x1p450)) ok = false;
-    }
-    if (!ok) break;
     const double type_sign = c.type == PolygonType::island ? 1.0 : -1.0;
-    const std::size_t n = v.size();
     if constexpr (K::is_exact) {
       // Exact kernels know each cycle's orientation (its turning number): the signed sums
       // of all cycles go into one sum.
-      const double s = type_sign * (c.counterclockwise ? 1.0 : -1.0);
-      for (std::size_t i = 0; i < n; ++i) bound += add_cross(sum, v[i], v[(i + 1) % n], s);
+      ok = add_cycle(r, c.vertices, type_sign * (c.counterclockwise ? 1.0 : -1.0), sum, bound);
     } else {
       // Other kernels' cycles are summed alone, their sign known when the sum exceeds its
       // bound (else the exact area decides).
       CompensatedSum own;
       double own_bound = 0;
-      for (std::size_t i = 0; i < n; ++i) own_bound += add_cross(own, v[i], v[(i + 1) % n], 1.0);
+      ok = add_cycle(r, c.vertices, 1.0, own, own_bound);
       own_bound = (own_bound + own.e) * (1 + 0x1p-20);
       const auto value = own.value();
-      if (!(std::fabs(value[1]) > own_bound)) {
-        ok = false;
-        break;
+      if (ok && !(std::fabs(value[1]) > own_bound)) ok = false;
+      if (ok) {
+        const double s = type_sign * (value[1] < 0 ? -1.0 : 1.0);
+        sum.add(s * value[1], s * value[0]);
+        bound += own_bound;
       }
-      const double s = type_sign * (value[1] < 0 ? -1.0 : 1.0);
-      sum.add(s * value[1], s * value[0]);
-      bound += own_bound;
     }
+    if (!ok) break;
   }
   if (ok) {
     // The bound was summed in rounded arithmetic: a relative allowance covers that.
