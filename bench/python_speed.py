@@ -15,7 +15,12 @@ intersection of the two blobs:
 - module_in_only: the same without reading the arrays out;
 - shapely: Polygon(A).intersection(Polygon(B)) and every ring of the result as a numpy
   array: arrays in, arrays out;
-- geos_only: the intersection of two shapely polygons built beforehand.
+- geos_only: the intersection of two shapely polygons built beforehand;
+- module_nothing_kept: the module after mkbool.release_memory(), as in a process's first
+  call (the module keeps the large blocks the library frees for its next call).
+
+Before each shapely and GEOS round the module's kept blocks are released (untimed), so
+that GEOS finds the heap as in a process without mkbool.
 
 Then the cost of the exact values (exact area, exact coordinates, Fractions) asked for in
 the call or afterwards, on the blobs and on two stars with many crossings (exact_costs).
@@ -187,18 +192,34 @@ def main():
         mkbool.intersection(a, b, kernel=args.kernel)
         return time.perf_counter() - t0
 
+    def module_nothing_kept():
+        # The module after release_memory(): no freed blocks kept from the last call, as in
+        # the first call of a process.
+        _mkbool.release_memory()
+        t0 = time.perf_counter()
+        r = mkbool.intersection(a, b, kernel=args.kernel)
+        r.polygons
+        return time.perf_counter() - t0
+
     def shapely_arrays_in_out():
+        # GEOS runs on glibc's heap as in a process where mkbool kept nothing: the blocks
+        # the module keeps between calls (python/src/memory.cpp) are handed back first,
+        # since otherwise GEOS would find less free memory in the heap than without mkbool.
+        _mkbool.release_memory()
         t0 = time.perf_counter()
         shapely_arrays(sg.Polygon(a).intersection(sg.Polygon(b)))
         return time.perf_counter() - t0
 
     def geos_only():
+        _mkbool.release_memory()  # as for shapely_arrays_in_out
         t0 = time.perf_counter()
         sa.intersection(sb)
         return time.perf_counter() - t0
 
-    variants = {"cpp": cpp, "module": module, "module_in_only": module_in_only, "shapely": shapely_arrays_in_out,
-                "geos_only": geos_only}
+    # The order within a round: the variants that release the module's kept blocks first,
+    # so that the C++ call and the module run alike with the blocks of the call before.
+    variants = {"shapely": shapely_arrays_in_out, "geos_only": geos_only, "module_nothing_kept": module_nothing_kept,
+                "cpp": cpp, "module": module, "module_in_only": module_in_only}
     for f in variants.values():  # warm up: caches, allocator, lazy imports
         f()
     times = {k: [] for k in variants}
@@ -224,6 +245,8 @@ def main():
             "module_conversions_over_cpp": (med_parts["convert_in"] + med_parts["arrays_out"]) / med["cpp"],
             "module_over_shapely": med["module"] / med["shapely"],
             "module_over_shapely_paired": statistics.median(x / y for x, y in zip(times["module"], times["shapely"])),
+            "module_nothing_kept_over_shapely_paired":
+                statistics.median(x / y for x, y in zip(times["module_nothing_kept"], times["shapely"])),
             "cpp_over_geos_only": med["cpp"] / med["geos_only"],
         },
         "area": {"mkbool": r.area, "geos": g.area}, "vertices_out": out_vertices,
@@ -239,6 +262,7 @@ def main():
     rows = [("C++ call (mk::compute, timed in C++)", "cpp"),
             ("module: numpy in, numpy out (.polygons)", "module"),
             ("module: numpy in, result object only", "module_in_only"),
+            ("module: numpy in, numpy out, no blocks kept from the last call", "module_nothing_kept"),
             ("shapely 1.8: numpy in, numpy out", "shapely"),
             ("GEOS alone (shapely polygons built before)", "geos_only")]
     md = [f"Intersection of two blobs of n = {args.n} vertices each, kernel `{args.kernel}`; medians of "
@@ -258,7 +282,8 @@ def main():
            f"Module overhead over the C++ call, arrays in and out: {100 * (ra['module_over_cpp_paired'] - 1):+.1f}% "
            f"(median of per-round ratios; {100 * (ra['module_over_cpp'] - 1):+.1f}% from the medians). "
            f"Module against shapely, arrays in and out: {ra['module_over_shapely_paired']:.2f}x the time "
-           f"(per-round ratios; {ra['module_over_shapely']:.2f}x from the medians); the C++ call against GEOS alone: "
+           f"(per-round ratios; {ra['module_over_shapely']:.2f}x from the medians; "
+           f"{ra['module_nothing_kept_over_shapely_paired']:.2f}x with no blocks kept); the C++ call against GEOS alone: "
            f"{ra['cpp_over_geos_only']:.2f}x.",
            f"Result: {out_vertices} vertices; area {r.area!r} (mkbool, exact area correctly rounded), "
            f"{g.area!r} (GEOS)."]

@@ -5,8 +5,10 @@
 // Preconditions: the GIL is held.
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -118,15 +120,20 @@ Polygon polygon_from_arrays(const py::sequence& rings, PolygonType type) {
 
 py::array_t<double> ring_array(const std::vector<Point>& ring, bool closed) {
   const std::size_t n = ring.size() + (closed && !ring.empty() ? 1 : 0);
-  py::array_t<double> a({static_cast<py::ssize_t>(n), py::ssize_t{2}});
-  double* out = a.mutable_data();
+  // The array's memory comes from the extension's allocator (memory.cpp): a large ring
+  // reuses a block kept from an earlier call instead of faulting fresh pages in. The
+  // capsule frees it with the array.
+  std::unique_ptr<double[]> data(new double[2 * std::max<std::size_t>(n, 1)]);
+  double* out = data.get();
   static_assert(sizeof(Point) == 2 * sizeof(double));
   if (!ring.empty()) std::memcpy(out, static_cast<const void*>(ring.data()), ring.size() * sizeof(Point));
   if (n > ring.size()) {
     out[2 * ring.size()] = ring.front().x;
     out[2 * ring.size() + 1] = ring.front().y;
   }
-  return a;
+  py::capsule owner(data.get(), [](void* p) { delete[] static_cast<double*>(p); });
+  data.release();
+  return py::array_t<double>({static_cast<py::ssize_t>(n), py::ssize_t{2}}, out, owner);
 }
 
 void bind_convert(py::module_& m) {

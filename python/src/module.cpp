@@ -179,6 +179,18 @@ PYBIND11_MODULE(_mkbool, m) {
   // in one thread otherwise (batch.cpp).
   m.def("mpfr_is_thread_safe", [] { return mpfr_buildopt_tls_p() != 0; });
 
+  m.def("memory_cache", [] {
+    const MemoryCacheState s = memory_cache_state();
+    py::dict d;
+    d["cached_bytes"] = s.cached_bytes;
+    d["blocks"] = s.blocks;
+    d["limit_bytes"] = s.limit_bytes;
+    return d;
+  }, "The large blocks (256 KiB and more) freed by the library and kept for its next call.");
+  m.def("set_memory_cache_limit", [](std::size_t bytes) { set_memory_cache_limit(bytes); }, py::arg("bytes"),
+        "At most this many bytes of freed blocks are kept (0: none); kept blocks beyond it are freed.");
+  m.def("release_memory", [] { release_memory_cache(); }, "Frees every kept block.");
+
   bind_convert(m);
   bind_result(m);
   bind_batch(m);

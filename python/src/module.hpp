@@ -145,6 +145,16 @@ BooleanOutput run_compute(const InputPolygon& a, const InputPolygon& b, const Bo
 // its rounded cycles with the hole type when unbounded.
 InputPolygon input_from_result(Result& r);
 
+// The cache of large freed blocks kept for the next call (memory.cpp).
+struct MemoryCacheState {
+  std::size_t cached_bytes = 0;
+  std::size_t blocks = 0;
+  std::size_t limit_bytes = 0;
+};
+MemoryCacheState memory_cache_state();
+void set_memory_cache_limit(std::size_t bytes);  // frees kept blocks beyond it
+void release_memory_cache();                     // frees every kept block
+
 void bind_convert(py::module_& m);
 void bind_fill(py::module_& m);
 void bind_result(py::module_& m);
