@@ -16,6 +16,7 @@
 // Preconditions: glibc (malloc_usable_size); not linked into sanitizer builds, whose
 // runtime replaces the allocator.
 #include <malloc.h>
+#include <pthread.h>
 
 #include <array>
 #include <cstddef>
@@ -89,6 +90,11 @@ class BlockCache {
     }
   }
 
+  // Around fork(): the child gets the cache unlocked and consistent even when another thread
+  // of the parent was inside it (Python's multiprocessing forks threaded processes).
+  void lock() { mutex_.lock(); }
+  void unlock() { mutex_.unlock(); }
+
   MemoryCacheState state() {
     const std::lock_guard lock(mutex_);
     return {cached_, count_, limit_};
@@ -109,7 +115,12 @@ class BlockCache {
 
 // Never destroyed: blocks are freed through it during and after static destruction.
 BlockCache& cache() {
-  static BlockCache* c = new (std::malloc(sizeof(BlockCache))) BlockCache;
+  alignas(BlockCache) static unsigned char storage[sizeof(BlockCache)];
+  static BlockCache* c = [] {
+    auto* made = new (storage) BlockCache;
+    pthread_atfork([] { cache().lock(); }, [] { cache().unlock(); }, [] { cache().unlock(); });
+    return made;
+  }();
   return *c;
 }
 

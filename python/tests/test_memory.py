@@ -3,6 +3,8 @@ within the limit, released on request, and the results the same with or without 
 in one thread and in many."""
 
 import concurrent.futures
+import multiprocessing
+import threading
 
 import numpy as np
 import pytest
@@ -17,6 +19,10 @@ def disc(n, dx=0.0, dy=0.0, r=1.0):
 
 def fingerprint(r):
     return [x.tobytes() for x in r.rings], r.area_exact, r.types
+
+
+def area_of_pair(pair):
+    return mkbool.intersection(*pair).area
 
 
 @pytest.fixture(autouse=True)
@@ -77,3 +83,25 @@ def test_results_are_the_same_with_kept_blocks_without_them_and_in_threads():
     del r
     mkbool.release_memory()
     assert [x.tobytes() for x in rings] == want[8][0]
+
+
+def test_a_forked_child_computes_while_a_thread_of_the_parent_does():
+    # The fork may come while the parent's other thread is inside the cache (its lock
+    # taken): the child must find it unlocked, not wait forever.
+    a, b = disc(30000), disc(30000, 0.4)
+    want = mkbool.intersection(a, b).area
+    stop = threading.Event()
+
+    def busy():
+        while not stop.is_set():
+            mkbool.intersection(a, b, threads=2)
+
+    worker = threading.Thread(target=busy)
+    worker.start()
+    try:
+        with multiprocessing.get_context("fork").Pool(2) as pool:
+            got = pool.map_async(area_of_pair, [(a, b)] * 8, chunksize=1).get(timeout=120)
+    finally:
+        stop.set()
+        worker.join()
+    assert got == [want] * 8
