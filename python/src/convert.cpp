@@ -98,13 +98,14 @@ Polygon polygon_from_arrays(const py::sequence& rings, PolygonType type) {
     }
     const auto n = static_cast<std::size_t>(a.shape(0));
     if (n == 0) throw InvalidInput(where + ": ring is empty");
-    // A block copy, then one pass for finiteness and the paper's form as native JSON takes
-    // it (no closing vertex, no zero-length edge); faster than pushing vertex by vertex.
+    // One pass from the array into the ring, for finiteness and the paper's form as native
+    // JSON takes it (no closing vertex, no zero-length edge); faster than pushing vertex
+    // by vertex.
     Ring ring(n);
-    std::memcpy(static_cast<void*>(ring.data()), a.data(), n * sizeof(Point));
+    const double* d = a.data();
     std::size_t kept = 0;
     for (std::size_t v = 0; v < n; ++v) {
-      const Point q = ring[v];
+      const Point q{d[2 * v], d[2 * v + 1]};
       if (!std::isfinite(q.x) || !std::isfinite(q.y)) {
         throw InvalidInput(where + ", vertex " + std::to_string(v) + ": " + (std::isfinite(q.x) ? "y" : "x") +
                            " coordinate is not finite");
