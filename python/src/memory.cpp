@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <mutex>
 #include <new>
@@ -70,7 +71,8 @@ class BlockCache {
     trim_to_limit();
   }
 
-  // Frees every kept block (largest first) until the total fits the limit.
+  // Frees kept blocks, largest first, until their total fits both `limit` and the cache's
+  // limit.
   void trim_to_limit(std::size_t limit = SIZE_MAX) {
     for (;;) {
       void* p = nullptr;
