@@ -175,12 +175,11 @@ std::optional<double> rounded_area(const BooleanResult<K>& r) {
       ok = add_cycle(r, c.vertices, 1.0, own, own_bound);
       own_bound = (own_bound + own.e) * (1 + 0x1p-20);
       const auto value = own.value();
-      if (ok && !(std::fabs(value[1]) > own_bound)) ok = false;
-      if (ok) {
-        const double s = type_sign * (value[1] < 0 ? -1.0 : 1.0);
-        sum.add(s * value[1], s * value[0]);
-        bound += own_bound;
-      }
+      ok = ok && std::fabs(value[1]) > own_bound;
+      if (!ok) break;
+      const double s = type_sign * (value[1] < 0 ? -1.0 : 1.0);
+      sum.add(s * value[1], s * value[0]);
+      bound += own_bound;
     }
     if (!ok) break;
   }

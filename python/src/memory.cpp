@@ -138,6 +138,14 @@ void* allocate(std::size_t n) {
   }
 }
 
+void* allocate_or_null(std::size_t n) noexcept {
+  try {
+    return allocate(n);
+  } catch (...) {
+    return nullptr;
+  }
+}
+
 void release(void* p) noexcept {
   if (p == nullptr) return;
   const std::size_t size = malloc_usable_size(p);
@@ -158,20 +166,8 @@ void release_memory_cache() { cache().trim_to_limit(0); }
 
 void* operator new(std::size_t n) { return mk::python::allocate(n); }
 void* operator new[](std::size_t n) { return mk::python::allocate(n); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  try {
-    return mk::python::allocate(n);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-  try {
-    return mk::python::allocate(n);
-  } catch (...) {
-    return nullptr;
-  }
-}
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept { return mk::python::allocate_or_null(n); }
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { return mk::python::allocate_or_null(n); }
 void operator delete(void* p) noexcept { mk::python::release(p); }
 void operator delete[](void* p) noexcept { mk::python::release(p); }
 void operator delete(void* p, std::size_t) noexcept { mk::python::release(p); }
