@@ -93,7 +93,7 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   Incidence inc = classify_fragments(arr, threads);  // step 4
   hook(Step::classified, arr);
   Table ef = make_ef_table<Table>(arr);
-  const std::vector<int> isolated_points = select_into_ef(arr, inc, opt.op, opt.regular, ef);  // step 5
+  const std::vector<int> isolated_points = select_into_ef(arr, inc, opt.op, opt.regular, ef, threads);  // step 5
   hook(Step::selected, arr);
   // Step 6 needs EF and the vertices only: the per-edge data of steps 2-5 is released
   // first, so that step 6's arrays reuse its memory instead of growing the heap.

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "predicates/directions.hpp"
@@ -100,23 +102,30 @@ class SortedEdgeTable {
 // (0 .. num_vertices - 1), so the hash function is the identity into num_vertices buckets,
 // each a chain of entries in insertion order: no collisions between vertices, and the
 // buckets of the consecutive vertices of a walk (near ids, as ids follow lexicographic
-// order) lie near each other in memory. 4 bytes per vertex and 4 per entry beside the
+// order) lie near each other in memory. 4 bytes per vertex and 8 per entry beside the
 // entries. Deletion clears `alive` and leaves the entry in its chain.
+// An entry may also stand for a run of consecutive fragments of one cycle whose inner
+// vertices no other fragment meets (insert_run): the walk of step 6 goes through such a
+// vertex one way only, so the run is one entry from its first vertex to its last, with its
+// inner vertices and the directions after the first kept beside the entries. A run never
+// equals or opposes another entry (its inner vertices are its own), so the duplicate and
+// opposite tests of single fragments pass over runs.
 class HashEdgeTable {
  public:
   HashEdgeTable(std::size_t capacity, int num_vertices) : head_(static_cast<std::size_t>(num_vertices), -1) {
     entries_.reserve(capacity);
     next_.reserve(capacity);
+    run_.reserve(capacity);
   }
 
   // InsertEF of one fragment; batches make no difference to a hash table. One walk along
   // e.from's chain both finds a copy of e and reaches the chain's end, where e is linked.
-  void insert(EfEntry e, bool regular) {
+  [[gnu::always_inline]] void insert(EfEntry e, bool regular) {
     e.alive = true;
     int* link = &head_[static_cast<std::size_t>(e.from)];
     for (; *link >= 0; link = &next_[static_cast<std::size_t>(*link)]) {
       const EfEntry& en = entries_[static_cast<std::size_t>(*link)];
-      if (en.to == e.to && en.alive) return;
+      if (en.to == e.to && en.alive && run_[static_cast<std::size_t>(*link)] < 0) return;
     }
     if (regular) {
       if (EfEntry* opp = find(e.to, e.from)) {
@@ -124,16 +133,39 @@ class HashEdgeTable {
         return;
       }
     }
-    *link = static_cast<int>(entries_.size());
-    // Made in place from e's fields: copying e whole would wait for the narrow stores that
-    // just made it (GCC 12).
-    EfEntry& made = entries_.emplace_back();  // in place, fields set (aggregates: no parenthesised init in clang 14)
-    made.from = e.from;
-    made.to = e.to;
-    made.dir = e.dir;
-    made.alive = true;
-    next_.push_back(-1);
+    append(link, e, -1);
   }
+
+  // Room for `n` inner vertices of runs, each written once by set_inner before the run that
+  // holds it is inserted (the pages are touched only as runs fill them).
+  void make_inner_room(std::size_t n) {
+    inner_ = std::make_unique_for_overwrite<int[]>(n);
+    inner_dirs_ = std::make_unique_for_overwrite<InnerDirection[]>(n);
+  }
+  // Inner vertex k of some run: v, left along `leaving`.
+  void set_inner(std::size_t k, int v, Direction leaving) {
+    inner_[k] = v;
+    inner_dirs_[k] = {leaving.from, leaving.to};
+  }
+  // A run of fragments from e.from to e.to (e.dir leaving e.from) through the inner vertices
+  // begin .. begin + count - 1 (count >= 1), in order. Inserted as it is: a run has no copy
+  // and no opposite.
+  void insert_run(const EfEntry& e, std::size_t begin, std::size_t count) {
+    int* link = &head_[static_cast<std::size_t>(e.from)];
+    while (*link >= 0) link = &next_[static_cast<std::size_t>(*link)];
+    runs_.push_back({begin, count});
+    append(link, e, static_cast<int>(runs_.size()) - 1);
+  }
+
+  // An entry's inner vertices: {first, count} (count 0 for one fragment), each read with
+  // inner_vertex and the direction leaving it with inner_direction.
+  std::pair<std::size_t, std::size_t> inner_range(const EfEntry& e) const {
+    const int r = run_[static_cast<std::size_t>(&e - entries_.data())];
+    return r < 0 ? std::pair<std::size_t, std::size_t>{0, 0} : runs_[static_cast<std::size_t>(r)];
+  }
+  int inner_vertex(std::size_t k) const { return inner_[k]; }
+  std::size_t num_runs() const { return runs_.size(); }
+  Direction inner_direction(std::size_t k) const { return {inner_dirs_[k].from, inner_dirs_[k].to}; }
 
   template <class F>
   void for_each_from(int v, F&& f) {
@@ -153,13 +185,35 @@ class HashEdgeTable {
   EfEntry* find(int from, int to) {
     for (int i = head_[static_cast<std::size_t>(from)]; i >= 0; i = next_[static_cast<std::size_t>(i)]) {
       EfEntry& en = entries_[static_cast<std::size_t>(i)];
-      if (en.to == to && en.alive) return &en;
+      if (en.to == to && en.alive && run_[static_cast<std::size_t>(i)] < 0) return &en;
     }
     return nullptr;
+  }
+  // Links e (run r, or -1) at `link`, the end of its vertex's chain.
+  void append(int* link, const EfEntry& e, int r) {
+    *link = static_cast<int>(entries_.size());
+    // Made in place from e's fields: copying e whole would wait for the narrow stores that
+    // just made it (GCC 12).
+    EfEntry& made = entries_.emplace_back();  // in place, fields set (aggregates: no parenthesised init in clang 14)
+    made.from = e.from;
+    made.to = e.to;
+    made.dir = e.dir;
+    made.alive = true;
+    next_.push_back(-1);
+    run_.push_back(r);
   }
   std::vector<int> head_;         // per vertex: its first entry, or -1
   std::vector<int> next_;         // per entry: the next entry from the same vertex, or -1
   std::vector<EfEntry> entries_;  // insertion order, for a deterministic walk
+  // A direction as stored for inner vertices: no initialisation, so that make_inner_room
+  // touches no page.
+  struct InnerDirection {
+    int from, to;
+  };
+  std::vector<int> run_;  // per entry: its run, or -1 for one fragment
+  std::vector<std::pair<std::size_t, std::size_t>> runs_;  // per run: its inner vertices (first, count)
+  std::unique_ptr<int[]> inner_;                          // the runs' inner vertices
+  std::unique_ptr<InnerDirection[]> inner_dirs_;          // the direction leaving each
 };
 
 }  // namespace mk

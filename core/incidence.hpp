@@ -131,6 +131,9 @@ class FragmentEndTable {
     bool inline_ = false;
   };
   bool reaches(int v) const { return (reached_[static_cast<std::size_t>(v) / 64] >> (v % 64)) & 1; }
+  // Whether the polygon meets v once, away from a cycle's start: v's ends are the fragment
+  // leaving it and the one before, and no other.
+  bool is_simple(int v) const { return slot_[static_cast<std::size_t>(v)] >= 0; }
   int count(int v) const {
     const int s = slot_[static_cast<std::size_t>(v)];
     if (s >= 0) return 2;

@@ -14,6 +14,7 @@
 
 #include "core/arrangement.hpp"
 #include "core/edge_fragment_table.hpp"
+#include "core/parallel.hpp"
 #include "core/step4_classify.hpp"
 #include "core/tables.hpp"
 
@@ -105,43 +106,173 @@ void for_each_entry_of(const PreparedPolygon& poly, const Fragment& f, Selection
   if (s == Selection::reversed || s == Selection::both) insert(EfEntry{f.to, f.from, dir.reversed(), true});
 }
 
+// What the result keeps of fragment f of polygon p (0 = A, 1 = B) [MK89 §3.1 step 5].
+template <Kernel K>
+[[gnu::always_inline]] inline Selection select_fragment(const Arrangement<K>& arr, const Incidence& inc, Operation op, bool regular, int p,
+                          const Fragment& f) {
+  const PolygonType ta = arr.polygon[0].type;
+  const PolygonType tb = arr.polygon[1].type;
+  const PreparedPolygon& poly = arr.polygon[p];
+  const int q = 1 - p;
+  const bool own_left = f.far_left[p] > 0;
+  const bool own_right = f.far_right[p] > 0;
+  const bool other_left = f.far_left[q] > 0;
+  const bool other_right = f.far_right[q] > 0;
+  const auto [same, opposite] = fragments_along(arr.polygon[q], inc.ends[q], f.from, f.to);
+  // A regular part of its own polygon: its FAR on the side Table 1 put it.
+  const bool proper_own = poly.far_sign > 0 ? (own_left && !own_right) : (!own_left && own_right);
+  const bool proper_other = other_left != other_right ? same + opposite == 1 : same + opposite == 0;
+  if (proper_own && proper_other) {
+    FragmentClass c = FragmentClass::outside;
+    if (other_left != other_right) {
+      c = same == 1 ? FragmentClass::boundary_same : FragmentClass::boundary_opposite;
+    } else if (other_left) {
+      c = FragmentClass::inside;
+    }
+    return select_by_tables(op, regular, ta, tb, p, c);
+  }
+  const FragmentSides sides{is_in_region(ta, f.far_left[0]),  is_in_region(ta, f.far_right[0]),
+                            is_in_region(tb, f.far_left[1]),  is_in_region(tb, f.far_right[1]),
+                            p == 0 || same + opposite > 0, p == 1 || same + opposite > 0};
+  return select_by_set_operation(op, regular, ta, sides);
+}
+
 // Step 5: decides what the result keeps of every fragment of A, then of B, and calls
 // insert(p, EfEntry) (p = 0 for A's fragments, 1 for B's) for the entries that makes,
 // fragment by fragment [MK89 §3.1 step 5].
 template <Kernel K, class F>
 void select_fragments(const Arrangement<K>& arr, const Incidence& inc, Operation op, bool regular, F&& insert) {
-  const PolygonType ta = arr.polygon[0].type;
-  const PolygonType tb = arr.polygon[1].type;
   for (int p = 0; p < 2; ++p) {
     const PreparedPolygon& poly = arr.polygon[p];
-    const int q = 1 - p;
     for (const Fragment& f : poly.fragments) {
-      const bool own_left = f.far_left[p] > 0;
-      const bool own_right = f.far_right[p] > 0;
-      const bool other_left = f.far_left[q] > 0;
-      const bool other_right = f.far_right[q] > 0;
-      const auto [same, opposite] = fragments_along(arr.polygon[q], inc.ends[q], f.from, f.to);
-      // A regular part of its own polygon: its FAR on the side Table 1 put it.
-      const bool proper_own = poly.far_sign > 0 ? (own_left && !own_right) : (!own_left && own_right);
-      const bool proper_other = other_left != other_right ? same + opposite == 1 : same + opposite == 0;
-      Selection s = Selection::none;
-      if (proper_own && proper_other) {
-        FragmentClass c = FragmentClass::outside;
-        if (other_left != other_right) {
-          c = same == 1 ? FragmentClass::boundary_same : FragmentClass::boundary_opposite;
-        } else if (other_left) {
-          c = FragmentClass::inside;
-        }
-        s = select_by_tables(op, regular, ta, tb, p, c);
-      } else {
-        const FragmentSides sides{is_in_region(ta, f.far_left[0]),  is_in_region(ta, f.far_right[0]),
-                                  is_in_region(tb, f.far_left[1]),  is_in_region(tb, f.far_right[1]),
-                                  p == 0 || same + opposite > 0, p == 1 || same + opposite > 0};
-        s = select_by_set_operation(op, regular, ta, sides);
-      }
-      for_each_entry_of(poly, f, s, [&](const EfEntry& e) { insert(p, e); });
+      for_each_entry_of(poly, f, select_fragment(arr, inc, op, regular, p, f), [&](const EfEntry& e) { insert(p, e); });
     }
   }
+}
+
+// An entry for EF made by select_runs_into_hash: one fragment (count 0), or a run with its
+// inner vertices.
+struct EfItem {
+  EfEntry entry;
+  std::size_t begin = 0, count = 0;
+};
+
+inline void insert_item(HashEdgeTable& ef, const EfItem& it) {
+  if (it.count == 0) {
+    ef.insert(it.entry, true);
+  } else {
+    ef.insert_run(it.entry, it.begin, it.count);
+  }
+}
+
+// Cycles of fewer fragments than this (squares of a grid) are decided fragment by fragment:
+// their runs are short, and looking for them costs more than it saves.
+inline constexpr int kShortCycle = 32;
+
+// Polygon p's part of select_runs_into_hash: its entries to out(EfItem) in order, its runs'
+// inner vertices written into ef's room from `at` on; cycles of fewer than `short_cycle`
+// fragments fragment by fragment.
+template <Kernel K, class Out>
+void select_runs_of(const Arrangement<K>& arr, const Incidence& inc, Operation op, int p, HashEdgeTable& ef,
+                    std::size_t at, int short_cycle, Out&& out) {
+  const PreparedPolygon& poly = arr.polygon[static_cast<std::size_t>(p)];
+  const FragmentEndTable& own = inc.ends[static_cast<std::size_t>(p)];
+  const FragmentEndTable& other = inc.ends[static_cast<std::size_t>(1 - p)];
+  const Fragment* const fragment = poly.fragments.data();
+  const Edge* const edges = poly.edges.data();
+  const auto dir_of = [&](const Fragment& f) {
+    const Edge& e = edges[f.edge];
+    return Direction{e.src, e.dst};
+  };
+  const auto add_single = [&](const Fragment& f, Selection s) {
+    for_each_entry_of(poly, f, s, [&](const EfEntry& e) { out(EfItem{e, 0, 0}); });
+  };
+  const std::vector<int>& starts = poly.cycle_first_fragment;
+  for (std::size_t c = 0; c + 1 < starts.size(); ++c) {
+    const int first = starts[c];
+    const int last = starts[c + 1];
+    if (last - first < short_cycle) {
+      for (int k = first; k < last; ++k) add_single(fragment[k], select_fragment(arr, inc, op, true, p, fragment[k]));
+      continue;
+    }
+    Selection s = select_fragment(arr, inc, op, true, p, fragment[first]);
+    for (int i = first; i < last;) {
+      // The run i .. j: while the vertex after j is simple, and the fragment after it is
+      // kept the same way and does not close the cycle (each fragment decided once:
+      // `after` is j + 1's selection).
+      int j = i;
+      Selection after = Selection::none;
+      bool decided = false;
+      const bool can_run = s == Selection::as_is || s == Selection::reversed;
+      while (j + 1 < last) {
+        const Fragment& g = fragment[j + 1];
+        after = select_fragment(arr, inc, op, true, p, g);
+        decided = true;
+        if (!can_run || after != s || other.reaches(g.from) || !own.is_simple(g.from) || g.to == fragment[i].from) break;
+        ++j;
+        decided = false;
+      }
+      if (j == i || (s == Selection::reversed && j == i + 1)) {
+        for (int k = i; k <= j; ++k) add_single(fragment[k], s);
+      } else if (s == Selection::as_is) {
+        const std::size_t begin = at;
+        for (int k = i + 1; k <= j; ++k) ef.set_inner(at++, fragment[k].from, dir_of(fragment[k]));
+        out(EfItem{EfEntry{fragment[i].from, fragment[j].to, dir_of(fragment[i]), true}, begin, at - begin});
+      } else {  // reversed: fragment i alone first, then j down to i + 1 as one run
+        add_single(fragment[i], s);
+        const std::size_t begin = at;
+        for (int k = j - 1; k > i; --k) ef.set_inner(at++, fragment[k].to, dir_of(fragment[k]).reversed());
+        out(EfItem{EfEntry{fragment[j].to, fragment[i + 1].from, dir_of(fragment[j]).reversed(), true}, begin,
+                   at - begin});
+      }
+      i = j + 1;
+      if (i < last) s = decided ? after : select_fragment(arr, inc, op, true, p, fragment[i]);
+    }
+  }
+}
+
+// Step 5 into a hash table, in regular output: the same entries as select_fragments makes,
+// except that a run of consecutive fragments of a cycle kept the same way, whose inner
+// vertices no other fragment of either polygon meets, is one entry (HashEdgeTable::
+// insert_run). A run kept reversed gives its first fragment an entry of its own, inserted
+// before the rest: the first entry in insertion order, where step 6 starts its walks, is
+// then the same as fragment by fragment, and so are the cycles and their first vertices.
+// The inner vertices of a run have one way in and one way out, so step 6 passes them the
+// same way either way. When both polygons have many fragments in long cycles, B's are
+// decided on a second thread beside A's, which go into EF as they are decided, and B's
+// entries wait until A's are in (each polygon writes its runs' inner vertices into its own
+// part of the table's room). `short_cycle`: see kShortCycle (tests take 1, every cycle).
+// [MK89 §3.3] (EF) (a deviation: paper-notes.md)
+template <Kernel K>
+void select_runs_into_hash(const Arrangement<K>& arr, const Incidence& inc, Operation op, HashEdgeTable& ef,
+                           unsigned threads = 1, int short_cycle = kShortCycle) {
+  std::array<std::size_t, 2> in_long{0, 0};  // fragments in cycles of short_cycle or more
+  for (std::size_t p = 0; p < 2; ++p) {
+    const std::vector<int>& starts = arr.polygon[p].cycle_first_fragment;
+    for (std::size_t c = 0; c + 1 < starts.size(); ++c) {
+      if (starts[c + 1] - starts[c] >= short_cycle) in_long[p] += static_cast<std::size_t>(starts[c + 1] - starts[c]);
+    }
+  }
+  if (in_long[0] + in_long[1] == 0) {
+    select_fragments(arr, inc, op, true, [&](int, const EfEntry& e) { ef.insert(e, true); });
+    return;
+  }
+  ef.make_inner_room(in_long[0] + in_long[1]);
+  const auto direct = [&](const EfItem& it) { insert_item(ef, it); };
+  if (threads < 2 || std::min(in_long[0], in_long[1]) < kParallelWork) {
+    select_runs_of(arr, inc, op, 0, ef, 0, short_cycle, direct);
+    select_runs_of(arr, inc, op, 1, ef, in_long[0], short_cycle, direct);
+    return;
+  }
+  std::vector<EfItem> later;  // B's entries
+  run_tasks(2, 2, [&](std::size_t p) {
+    if (p == 0) {
+      select_runs_of(arr, inc, op, 0, ef, 0, short_cycle, direct);
+    } else {
+      select_runs_of(arr, inc, op, 1, ef, in_long[0], short_cycle, [&](const EfItem& it) { later.push_back(it); });
+    }
+  });
+  for (const EfItem& it : later) insert_item(ef, it);
 }
 
 // Isolated points of the non-regular result [MK89 §3.2: degenerate single-point fragments
@@ -207,12 +338,18 @@ std::vector<int> select_isolated_points(const Arrangement<K>& arr, const Inciden
 // time), then, in non-regular output, the isolated points, which are returned.
 template <Kernel K, class Table>
 std::vector<int> select_into_ef(const Arrangement<K>& arr, const Incidence& inc, Operation op, bool regular,
-                                Table& ef) {
+                                Table& ef, unsigned threads = 1) {
   if constexpr (std::is_same_v<Table, SortedEdgeTable>) {
     std::array<std::vector<EfEntry>, 2> batch;
     select_fragments(arr, inc, op, regular, [&](int p, const EfEntry& e) { batch[p].push_back(e); });
     for (auto& b : batch) ef.insert_batch(std::move(b), regular);
   } else {
+    if constexpr (std::is_same_v<Table, HashEdgeTable>) {
+      if (regular) {
+        select_runs_into_hash(arr, inc, op, ef, threads);
+        return {};
+      }
+    }
     select_fragments(arr, inc, op, regular, [&](int, const EfEntry& e) { ef.insert(e, regular); });
   }
   if (regular) return {};

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -112,13 +113,27 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
 
   // Every walk starts from the first fragment still unused, in EF's insertion order
   // (for_each tests `alive` as it reaches each entry, after the earlier walks).
+  // An entry's direction, then its inner vertices each with the direction leaving it (a run
+  // of fragments through vertices nothing else meets: no choice and no return there).
+  const auto append_entry = [&](const EfEntry& e) {
+    path_dirs.push_back(e.dir);
+    if constexpr (std::is_same_v<Table, HashEdgeTable>) {
+      const auto [first, count] = ef.inner_range(e);
+      for (std::size_t k = first; k < first + count; ++k) {
+        path_vertices.push_back(ef.inner_vertex(k));
+        path_dirs.push_back(ef.inner_direction(k));
+      }
+    }
+  };
   ef.for_each([&](EfEntry& start) {
     start.alive = false;
-    path_vertices.assign({start.from, start.to});
-    path_dirs.assign({start.dir});
+    path_vertices.assign({start.from});
+    path_dirs.clear();
+    append_entry(start);
+    path_vertices.push_back(start.to);
     position[start.from] = 0;
     if (start.to == start.from) throw KernelFailure("degenerate fragment");
-    position[start.to] = 1;
+    position[start.to] = static_cast<int>(path_vertices.size()) - 1;
     while (path_vertices.size() > 1) {  // ends when a cycle closes at the start vertex
       const int v = path_vertices.back();
       EfEntry* next = choose_next(v, path_dirs.back());
@@ -126,7 +141,7 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
         throw KernelFailure(std::string("kernel ") + std::string(K::name) + ": a result polygon does not close");
       }
       next->alive = false;
-      path_dirs.push_back(next->dir);
+      append_entry(*next);
       if (position[next->to] >= 0) {
         emit(static_cast<std::size_t>(position[next->to]));
       } else {

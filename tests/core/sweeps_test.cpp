@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <numbers>
 #include <set>
 
@@ -245,18 +246,20 @@ TEST(InclusionParents, ShellIsTheInnermostIslandAroundEachHole) {
 
 // Inputs of tens of thousands of vertices, so that every parallel phase runs on threads
 // (core/parallel.hpp: kParallelWork).
+// A disc of n vertices about (cx, cy) whose radius waves `lobes` times around it.
+Polygon wavy_disc(int n, int lobes, double cx, double cy) {
+  Ring r;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * i / n;
+    const double radius = 100 * (1 + 0.1 * std::sin(lobes * t));
+    r.push_back({cx + radius * std::cos(t), cy + radius * std::sin(t)});
+  }
+  return Polygon{{r}, PolygonType::island};
+}
+
 std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> large_inputs() {
   std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> out;
-  const auto blob = [](int n, double cx, double cy) {
-    Ring r;
-    for (int i = 0; i < n; ++i) {
-      const double t = 2 * std::numbers::pi * i / n;
-      const double radius = 100 * (1 + 0.1 * std::sin(5 * t));
-      r.push_back({cx + radius * std::cos(t), cy + radius * std::sin(t)});
-    }
-    return Polygon{{r}, PolygonType::island};
-  };
-  out.push_back({"blob", {blob(12000, 0, 0), blob(12000, 30, 10)}});
+  out.push_back({"blob", {wavy_disc(12000, 5, 0, 0), wavy_disc(12000, 5, 30, 10)}});
   Polygon grid_a, grid_b;
   for (int j = 0; j < 80; ++j) {
     for (int i = j % 2; i < 80; i += 2) {
@@ -331,6 +334,73 @@ TEST(Threads, ResultsAreTheSameBitForBitOnAnyNumberOfThreads) {
       EXPECT_FALSE(seen.front().empty());
     }
   }
+}
+
+// The result cycles of a regular operation through steps 1-6 on `threads`, with step 5
+// making runs of fragments one EF entry (`runs`, in cycles of `short_cycle` fragments or
+// more) or inserting each fragment; `num_runs` counts the runs made.
+std::vector<ResultCycle> cycles_through_ef(const Polygon& a, const Polygon& b, Operation op, bool runs, unsigned threads,
+                                           int short_cycle, std::size_t& num_runs) {
+  Arrangement<K> arr = prepare<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b), PairSearch::sweep, threads);
+  normalize_orientations(arr, op, threads);
+  build_vertex_rings(arr);
+  insert_intersections(arr, PairSearch::sweep, threads);
+  const Incidence inc = classify_fragments(arr, threads);
+  HashEdgeTable ef = detail::make_ef_table<HashEdgeTable>(arr);
+  if (runs) {
+    select_runs_into_hash(arr, inc, op, ef, threads, short_cycle);
+  } else {
+    select_fragments(arr, inc, op, true, [&](int, const EfEntry& e) { ef.insert(e, true); });
+  }
+  num_runs += ef.num_runs();
+  return construct_result_cycles(arr, ef, op);
+}
+
+// Step 5's runs (paper-notes.md, deviation 20) change nothing in the result: the same
+// cycles with the same first vertices, directions and types as fragment by fragment, on one
+// thread and on two, for every operation (difference keeps B's fragments reversed), on
+// inputs with touching rings, shared edges, crossings and holes.
+TEST(EfRuns, SameCyclesBitForBitAsFragmentByFragment) {
+  std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> inputs = large_inputs();
+  // Long cycles in both polygons, enough for B to be decided on a second thread.
+  const int n = static_cast<int>(2 * kParallelWork);
+  inputs.push_back({"wavy", {wavy_disc(n, 7, 0, 0), wavy_disc(n, 7, 20, 5)}});
+  std::mt19937_64 rng(41);
+  const std::vector<Polygon> soups = segment_soups(rng);
+  for (std::size_t i = 0; i < soups.size(); ++i) {
+    inputs.push_back({"soup " + std::to_string(i), {soups[i], soups[(i + 3) % soups.size()]}});
+  }
+  for (int k = 0; k < 60; ++k) inputs.push_back({"random " + std::to_string(k), {random_polygon(rng, true), random_polygon(rng, true)}});
+  std::size_t runs_made = 0, runs_seen = 0, cycles = 0;
+  for (const auto& [name, ab] : inputs) {
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
+                               Operation::symmetric_difference}) {
+      std::size_t none = 0;
+      const std::vector<ResultCycle> want = cycles_through_ef(ab.first, ab.second, op, false, 1, 1, none);
+      ASSERT_EQ(none, 0u);
+      for (const auto& [threads, short_cycle] : {std::pair{1u, 1}, std::pair{2u, 1}, std::pair{2u, kShortCycle}}) {
+        std::size_t made = 0;
+        const std::vector<ResultCycle> got = cycles_through_ef(ab.first, ab.second, op, true, threads, short_cycle, made);
+        if (short_cycle == 1) {
+          runs_made += made;
+          runs_seen += made > 0;
+        }
+        ASSERT_EQ(got.size(), want.size()) << name << " " << operation_name(op) << " on " << threads << " threads";
+        for (std::size_t c = 0; c < want.size(); ++c) {
+          EXPECT_EQ(got[c].vertices, want[c].vertices) << name << " " << operation_name(op) << " cycle " << c;
+          EXPECT_TRUE(got[c].directions == want[c].directions) << name << " " << operation_name(op) << " cycle " << c;
+          EXPECT_EQ(got[c].type, want[c].type) << name << " " << operation_name(op) << " cycle " << c;
+          EXPECT_EQ(got[c].counterclockwise, want[c].counterclockwise) << name << " " << operation_name(op);
+        }
+        cycles += want.size();
+      }
+    }
+  }
+  // The runs were there to test: most cases make some when every cycle may have runs
+  // (runs_seen counts cases on both thread counts, 8 per input).
+  EXPECT_GT(runs_seen, inputs.size() * 4);
+  EXPECT_GT(runs_made, 10000u);
+  std::cout << runs_made << " runs in " << cycles << " cycles\n";
 }
 
 }  // namespace
