@@ -111,8 +111,6 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
     out.push_back(std::move(cycle));
   };
 
-  // Every walk starts from the first fragment still unused, in EF's insertion order
-  // (for_each tests `alive` as it reaches each entry, after the earlier walks).
   // An entry's direction, then its inner vertices each with the direction leaving it (a run
   // of fragments through vertices nothing else meets: no choice and no return there).
   const auto append_entry = [&](const EfEntry& e) {
@@ -125,6 +123,8 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
       }
     }
   };
+  // Every walk starts from the first fragment still unused, in EF's insertion order
+  // (for_each tests `alive` as it reaches each entry, after the earlier walks).
   ef.for_each([&](EfEntry& start) {
     start.alive = false;
     path_vertices.assign({start.from});
