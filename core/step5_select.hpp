@@ -108,8 +108,8 @@ void for_each_entry_of(const PreparedPolygon& poly, const Fragment& f, Selection
 
 // What the result keeps of fragment f of polygon p (0 = A, 1 = B) [MK89 §3.1 step 5].
 template <Kernel K>
-[[gnu::always_inline]] inline Selection select_fragment(const Arrangement<K>& arr, const Incidence& inc, Operation op, bool regular, int p,
-                          const Fragment& f) {
+[[gnu::always_inline]] inline Selection select_fragment(const Arrangement<K>& arr, const Incidence& inc, Operation op,
+                                                        bool regular, int p, const Fragment& f) {
   const PolygonType ta = arr.polygon[0].type;
   const PolygonType tb = arr.polygon[1].type;
   const PreparedPolygon& poly = arr.polygon[p];
@@ -208,7 +208,9 @@ void select_runs_of(const Arrangement<K>& arr, const Incidence& inc, Operation o
         const Fragment& g = fragment[j + 1];
         after = select_fragment(arr, inc, op, true, p, g);
         decided = true;
-        if (!can_run || after != s || other.reaches(g.from) || !own.is_simple(g.from) || g.to == fragment[i].from) break;
+        if (!can_run || after != s || other.reaches(g.from) || !own.is_simple(g.from) || g.to == fragment[i].from) {
+          break;
+        }
         ++j;
         decided = false;
       }

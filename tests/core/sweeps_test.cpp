@@ -339,8 +339,8 @@ TEST(Threads, ResultsAreTheSameBitForBitOnAnyNumberOfThreads) {
 // The result cycles of a regular operation through steps 1-6 on `threads`, with step 5
 // making runs of fragments one EF entry (`runs`, in cycles of `short_cycle` fragments or
 // more) or inserting each fragment; `num_runs` counts the runs made.
-std::vector<ResultCycle> cycles_through_ef(const Polygon& a, const Polygon& b, Operation op, bool runs, unsigned threads,
-                                           int short_cycle, std::size_t& num_runs) {
+std::vector<ResultCycle> cycles_through_ef(const Polygon& a, const Polygon& b, Operation op, bool runs,
+                                           unsigned threads, int short_cycle, std::size_t& num_runs) {
   Arrangement<K> arr = prepare<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b), PairSearch::sweep, threads);
   normalize_orientations(arr, op, threads);
   build_vertex_rings(arr);
@@ -370,7 +370,9 @@ TEST(EfRuns, SameCyclesBitForBitAsFragmentByFragment) {
   for (std::size_t i = 0; i < soups.size(); ++i) {
     inputs.push_back({"soup " + std::to_string(i), {soups[i], soups[(i + 3) % soups.size()]}});
   }
-  for (int k = 0; k < 60; ++k) inputs.push_back({"random " + std::to_string(k), {random_polygon(rng, true), random_polygon(rng, true)}});
+  for (int k = 0; k < 60; ++k) {
+    inputs.push_back({"random " + std::to_string(k), {random_polygon(rng, true), random_polygon(rng, true)}});
+  }
   std::size_t runs_made = 0, runs_seen = 0, cycles = 0;
   for (const auto& [name, ab] : inputs) {
     for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
@@ -380,7 +382,8 @@ TEST(EfRuns, SameCyclesBitForBitAsFragmentByFragment) {
       ASSERT_EQ(none, 0u);
       for (const auto& [threads, short_cycle] : {std::pair{1u, 1}, std::pair{2u, 1}, std::pair{2u, kShortCycle}}) {
         std::size_t made = 0;
-        const std::vector<ResultCycle> got = cycles_through_ef(ab.first, ab.second, op, true, threads, short_cycle, made);
+        const std::vector<ResultCycle> got =
+            cycles_through_ef(ab.first, ab.second, op, true, threads, short_cycle, made);
         if (short_cycle == 1) {
           runs_made += made;
           runs_seen += made > 0;
