@@ -120,7 +120,7 @@ class HashEdgeTable {
 
   // InsertEF of one fragment; batches make no difference to a hash table. One walk along
   // e.from's chain both finds a copy of e and reaches the chain's end, where e is linked.
-  [[gnu::always_inline]] void insert(EfEntry e, bool regular) {
+  void insert(EfEntry e, bool regular) {
     e.alive = true;
     int* link = &head_[static_cast<std::size_t>(e.from)];
     for (; *link >= 0; link = &next_[static_cast<std::size_t>(*link)]) {
