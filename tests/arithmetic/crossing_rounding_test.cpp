@@ -36,10 +36,30 @@ bool crosses_properly(const Point& a0, const Point& a1, const Point& b0, const P
 struct Tally {
   int decided = 0;
   int declined = 0;
+  int extended = 0;  // decided by the extended-precision stage alone
 };
 
+void expect_same(const Point& got, const Point& want, const Point& a0, const Point& a1, const Point& b0,
+                 const Point& b1) {
+  ASSERT_EQ(std::bit_cast<std::uint64_t>(got.x), std::bit_cast<std::uint64_t>(want.x))
+      << std::hexfloat << "a0 (" << a0.x << " " << a0.y << ") a1 (" << a1.x << " " << a1.y << ") b0 (" << b0.x
+      << " " << b0.y << ") b1 (" << b1.x << " " << b1.y << "): " << got.x << " vs " << want.x;
+  ASSERT_EQ(std::bit_cast<std::uint64_t>(got.y), std::bit_cast<std::uint64_t>(want.y))
+      << std::hexfloat << "a0 (" << a0.x << " " << a0.y << ") a1 (" << a1.x << " " << a1.y << ") b0 (" << b0.x
+      << " " << b0.y << ") b1 (" << b1.x << " " << b1.y << "): " << got.y << " vs " << want.y;
+}
+
+// Every stage against the reference: the extended-precision stage alone (when it decides),
+// the later stages with tails (nearest_crossing with tails skips the first), and
+// nearest_crossing without tails (all three in turn).
 void check(const Point& a0, const Point& a1, const Point& b0, const Point& b1, Tally& t) {
   if (!crosses_properly(a0, a1, b0, b1)) return;
+  const Point reference_point = reference(a0, a1, b0, b1);
+  if (Point fast; crossing_rounding::nearest_crossing_extended(a0, a1, b0, b1, fast)) {
+    ++t.extended;
+    expect_same(fast, reference_point, a0, a1, b0, b1);
+  }
+  if (Point plain; nearest_crossing(a0, a1, b0, b1, plain)) expect_same(plain, reference_point, a0, a1, b0, b1);
   Point got, tail;
   double tail_err = 0;
   if (!nearest_crossing(a0, a1, b0, b1, got, &tail, &tail_err)) {
@@ -58,12 +78,7 @@ void check(const Point& a0, const Point& a1, const Point& b0, const Point& b1, T
   EXPECT_LE(abs(mpq_class(tail.y) - ry), mpq_class(tail_err));
   const double scale = std::max({std::fabs(want.x), std::fabs(want.y), 0x1p-1000});
   EXPECT_LE(tail_err, scale * 0x1p-54 + 0x1p-1070) << std::hexfloat << tail_err << " at " << scale;
-  ASSERT_EQ(std::bit_cast<std::uint64_t>(got.x), std::bit_cast<std::uint64_t>(want.x))
-      << std::hexfloat << "a0 (" << a0.x << " " << a0.y << ") a1 (" << a1.x << " " << a1.y << ") b0 (" << b0.x
-      << " " << b0.y << ") b1 (" << b1.x << " " << b1.y << "): " << got.x << " vs " << want.x;
-  ASSERT_EQ(std::bit_cast<std::uint64_t>(got.y), std::bit_cast<std::uint64_t>(want.y))
-      << std::hexfloat << "a0 (" << a0.x << " " << a0.y << ") a1 (" << a1.x << " " << a1.y << ") b0 (" << b0.x
-      << " " << b0.y << ") b1 (" << b1.x << " " << b1.y << "): " << got.y << " vs " << want.y;
+  expect_same(got, want, a0, a1, b0, b1);
 }
 
 // Random crossing segments at every scale 2^-1000 .. 2^1000 (all four points of one case
@@ -83,9 +98,45 @@ TEST(CrossingRounding, RandomSegmentsAtEveryScaleAgreeWithRationals) {
   EXPECT_GT(t.decided, 3000);  // about one random pair in five crosses
   EXPECT_EQ(t.declined, 0);
   const auto& n = crossing_rounding::counts;
-  std::printf("filter %llu, exact %llu\n", static_cast<unsigned long long>(n.filter),
-              static_cast<unsigned long long>(n.exact));
+  std::printf("extended %d of %d; with tails: filter %llu, exact %llu\n", t.extended, t.decided,
+              static_cast<unsigned long long>(n.filter), static_cast<unsigned long long>(n.exact));
   EXPECT_GE(n.filter, 99 * (n.filter + n.exact) / 100);
+#if defined(__x86_64__) || defined(__i386__)
+  // x87's long double: the first stage is there and decides most random crossings (about 9
+  // in 10: cancellation in D and in a0 + t da spends much of its 11 extra bits on these).
+  EXPECT_TRUE(crossing_rounding::extended_precision_available());
+  EXPECT_GE(t.extended, 85 * t.decided / 100);
+#endif
+}
+
+// Crossings a fraction 2^-k of a gap off the midpoint between two doubles (k = 1 .. 80), at
+// many scales and on both sides of zero, from a segment whose x steps by one ulp over a
+// height of 2 and a horizontal segment at height 2^-k: the extended-precision stage decides
+// the ones clear of the midpoint and declines the rest, never wrongly; every stage agrees.
+TEST(CrossingRounding, NearMidpointsTheExtendedStageDecidesRightOrDeclines) {
+  Tally t;
+  int near_decided = 0, far_declined = 0;
+  for (int e = -900; e <= 900; e += 37) {
+    for (const double sign : {1.0, -1.0}) {
+      for (int k = 1; k <= 80; ++k) {
+        const double base = sign * std::ldexp(1.0 + (k % 7) * 0x1p-52, e);
+        const double next = std::nextafter(base, sign * HUGE_VAL);
+        const double h = std::ldexp(1.0, e);
+        const double off = std::ldexp(h, -k);
+        const Point a0{base, -h}, a1{next, h}, b0{-4 * h * sign, off}, b1{4 * h * sign, off};
+        Point fast;
+        const bool decided = crossing_rounding::nearest_crossing_extended(a0, a1, b0, b1, fast);
+        near_decided += decided && k >= 12;
+        far_declined += !decided && k <= 4;
+        check(a0, a1, b0, b1, t);
+      }
+    }
+  }
+  std::printf("near midpoints: %d decided by the extended stage of %d\n", t.extended, t.decided);
+  EXPECT_EQ(t.declined, 0);
+  EXPECT_GT(t.extended, 0);
+  EXPECT_EQ(far_declined, 0);  // a quarter gap off the midpoint and more: always decided
+  EXPECT_EQ(near_decided, 0);  // 2^-12 of a gap and less: beyond its precision, never guessed
 }
 
 // Nearly parallel segments (the parameter t is ill-conditioned) and crossings close to an
@@ -122,9 +173,12 @@ TEST(CrossingRounding, ExactTiesGoToEven) {
         const double h = std::ldexp(1.0, e);
         const Point a0{base, -h}, a1{next, h}, b0{-4 * h * sign, 0}, b1{4 * h * sign, 0};
         const auto exact_before = crossing_rounding::counts.exact;
+        const int extended_before = t.extended;
         check(a0, a1, b0, b1, t);
-        // A tie is never left to the filter: only exact arithmetic can tell it.
-        EXPECT_EQ(crossing_rounding::counts.exact, exact_before + 1);
+        // A tie is never left to either filter: only exact arithmetic can tell it (check asks
+        // twice: with tails and without).
+        EXPECT_EQ(t.extended, extended_before);
+        EXPECT_EQ(crossing_rounding::counts.exact, exact_before + 2);
         Point got;
         ASSERT_TRUE(nearest_crossing(a0, a1, b0, b1, got));
         const double even = (std::bit_cast<std::uint64_t>(base) & 1) == 0 ? base : next;
