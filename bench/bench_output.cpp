@@ -66,15 +66,19 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
     certify_rounding(r, out, RoundingMode::certified, std::nullopt);
     certify += seconds_since(t);
     // The two parts of to_output that certified rounding consists of when the nearest
-    // doubles are valid, timed again apart: rounding every vertex, and the validity check
-    // of the rounded result (certificates, else the full OGC sweep).
+    // doubles are valid, timed again apart and done as to_output does them: rounding every
+    // vertex (with the half-sizes of its box when the certificate of boxes may be asked),
+    // and the validity check of the rounded result (certificates, else the full OGC sweep).
+    const bool many_crossings = static_cast<std::size_t>(r.arrangement.num_crossings()) > kFewCrossingsForExactCertificate;
+    RoundingHalves halves;
     t = Clock::now();
-    const std::vector<std::vector<Point>> nearest = detail::rounded_cycles(r, resolve_threads(opt.threads));
+    const std::vector<std::vector<Point>> nearest =
+        detail::rounded_cycles(r, resolve_threads(opt.threads), many_crossings ? &halves : nullptr);
     rounding += seconds_since(t);
     const std::vector<std::vector<int>> polygon_cycles = result_polygon_cycles(r);
     t = Clock::now();
-    const bool valid = is_valid_rounded_result_ogc<ExactKernel, ExactKernel>(r, nearest, polygon_cycles,
-                                                                              resolve_threads(opt.threads));
+    const bool valid = is_valid_rounded_result_ogc<ExactKernel, ExactKernel>(
+        r, nearest, polygon_cycles, resolve_threads(opt.threads), many_crossings ? &halves : nullptr);
     validity += seconds_since(t);
     benchmark::DoNotOptimize(valid);
     snapped = snapped || out.rounding.snapped;

@@ -76,6 +76,14 @@ struct Arrangement {
   bool is_input_point(int id) const { return id < num_points(); }
   int num_crossings() const { return static_cast<int>(crossings.size()); }
   int num_vertices() const { return num_points() + num_crossings(); }
+  // Asks the processor to fetch a crossing's storage (both ends of it: a vertex may straddle
+  // cache lines) before vertex(id) reads it; nothing for input points.
+  void prefetch(int id) const {
+    if (id < num_points()) return;
+    const auto* at = reinterpret_cast<const char*>(&crossings[static_cast<std::size_t>(id - num_points())]);
+    __builtin_prefetch(at);
+    __builtin_prefetch(at + sizeof(typename K::Vertex) - 1);
+  }
   // Any vertex by id: input points are made on demand, so they are stored only once.
   typename K::Vertex vertex(int id) const {
     return id < num_points() ? K::vertex(points[id]) : crossings[id - num_points()];

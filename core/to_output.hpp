@@ -98,13 +98,23 @@ std::vector<std::vector<Point>> rounded_cycles(const BooleanResult<K>& r, unsign
   const std::size_t work = first.back();
   const unsigned t = VertexBoxes<K> ? threads_for(work, threads) : 1;
   const std::size_t parts = t > 1 ? 8 * static_cast<std::size_t>(t) : 1;
-  // Each part walks its run of vertices, calling at(c, k) for each.
+  // Each part walks its run of vertices, calling at(c, k) for each, and asks for the vertex
+  // `ahead` places on to be fetched: in cycle order the crossings are scattered over the
+  // arrangement's array, and once rounding got fast (the extended-precision stage of
+  // crossing_rounding.hpp) waiting for them was most of its time (star 1e4, one thread:
+  // 21 ms to 14 ms).
+  constexpr std::size_t ahead = 16;
   const auto walk = [&](auto&& at) {
     run_tasks(t, parts, [&](std::size_t part) {
       const std::size_t lo = work * part / parts, hi = work * (part + 1) / parts;
       std::size_t c = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), lo) - first.begin()) - 1;
+      std::size_t c_ahead = c;
       for (std::size_t i = lo; i < hi; ++i) {
         while (i >= first[c + 1]) ++c;
+        if (i + ahead < hi) {
+          while (i + ahead >= first[c_ahead + 1]) ++c_ahead;
+          r.arrangement.prefetch(r.cycles[c_ahead].vertices[i + ahead - first[c_ahead]]);
+        }
         at(c, i - first[c]);
       }
     });
