@@ -279,6 +279,46 @@ TEST(RoundingBoxes, StarsAreCertifiedOnAnyNumberOfThreads) {
   }
 }
 
+// A lattice of 130 x 130 squares (67,600 moved vertices and edges: the grid's lists are
+// made in bands of rows on several threads) whose vertex boxes keep clear of the other
+// squares, then with one square's upper right corner moved right onto the corner of the
+// square beside it, in every row of squares (so at every band's edges): the same verdict on
+// 1 and 2 threads (and 3 in some rows), and the one the construction gives (the corners
+// meet; in the last column there is no square beside it and the result stays valid).
+TEST(RoundingBoxes, LargeLatticesTheSameVerdictOnAnyNumberOfThreads) {
+  std::mt19937_64 rng(test_seed(83));
+  constexpr int side = 130;
+  std::vector<RoundedVertexBox> boxes;
+  std::vector<std::array<int, 2>> edges;
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      const int first = static_cast<int>(boxes.size());
+      const double x = i, y = j;  // a square of side 0.75 at (x, y), 0.25 from its neighbours
+      for (const Point p : {Point{x, y}, Point{x + 0.75, y}, Point{x + 0.75, y + 0.75}, Point{x, y + 0.75}}) {
+        boxes.push_back({p, 0x1p-40, 0x1p-40});
+      }
+      for (int k = 0; k < 4; ++k) edges.push_back({first + k, first + (k + 1) % 4});
+    }
+  }
+  for (const unsigned threads : {1u, 2u, 3u}) EXPECT_TRUE(detail::boxes_keep_topology(boxes, edges, false, threads));
+  int last_column = 0;
+  for (int j = 0; j < side; ++j) {
+    const int i = j % 16 == 5 ? side - 1 : static_cast<int>(rng() % (side - 1));
+    last_column += i == side - 1;
+    const std::size_t corner = static_cast<std::size_t>(4 * (i * side + j) + 2);
+    const RoundedVertexBox kept = boxes[corner];
+    boxes[corner].at.x += 0.25;  // onto the upper left corner of square (i + 1, j)
+    const bool expected = i == side - 1;
+    for (const unsigned threads : {1u, 2u, 3u}) {
+      if (threads == 3 && j % 8 != 0) continue;
+      EXPECT_EQ(detail::boxes_keep_topology(boxes, edges, false, threads), expected)
+          << "square " << i << " " << j << ", " << threads << " threads";
+    }
+    boxes[corner] = kept;
+  }
+  EXPECT_GE(last_column, 8);
+}
+
 // The exact certificate of few crossings (rounding_motion.hpp) over a result of many input
 // points whose crossings lie on opposite sides of it: a ring of 3000 points, and two thin
 // triangles outside it, each with an edge along the ring's tangent at a ring point p and a
