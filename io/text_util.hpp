@@ -39,11 +39,18 @@ inline std::string describe_position(std::string_view text, std::size_t offset) 
 // Shortest text that reads back as the same double (std::to_chars without a format):
 // the writers never lose a bit, and 0.1 stays "0.1". Negative zero is written "0": it is
 // the same coordinate, and "-0" only puzzles readers.
+// The shortest text of a double is at most 24 characters ("-2.2250738585072014e-308").
+inline constexpr std::size_t kMaxDoubleText = 24;
+
+// Writes the text at `at`, which has room for kMaxDoubleText characters; returns its end.
+inline char* put_double(char* at, double v) {
+  if (v == 0) v = 0;
+  return std::to_chars(at, at + kMaxDoubleText, v).ptr;
+}
+
 inline void append_double(std::string& out, double v) {
   char buf[32];
-  if (v == 0) v = 0;
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
+  out.append(buf, put_double(buf, v));
 }
 
 inline std::string format_double(double v) {
