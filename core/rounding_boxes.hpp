@@ -284,8 +284,8 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
           spans[k] = {0, -1, 0, -1};
           continue;
         }
-        spans[k] = span(k);
-        count += static_cast<std::size_t>(spans[k][1] - spans[k][0] + 1) * static_cast<std::size_t>(spans[k][3] - spans[k][2] + 1);
+        const auto& sp = spans[k] = span(k);
+        count += static_cast<std::size_t>(sp[1] - sp[0] + 1) * static_cast<std::size_t>(sp[3] - sp[2] + 1);
       }
       part_entries[part] = count;
     });
@@ -293,10 +293,13 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     if (entries > budget) return false;
   }
   const int bands = list_threads > 1 ? 2 * static_cast<int>(list_threads) : 1;
+  const auto band_rows = [&](int band) {  // the rows [first, last) of band `band`
+    return std::array<int, 2>{grid.rows() * band / bands, grid.rows() * (band + 1) / bands};
+  };
   // Calls f(k, c, r) for every cell (c, r) of band `band` that listed vertex k's box meets,
   // k in order.
   const auto for_each_in_band = [&](int band, auto&& f) {
-    const int r_lo = grid.rows() * band / bands, r_hi = grid.rows() * (band + 1) / bands;
+    const auto [r_lo, r_hi] = band_rows(band);
     for (std::size_t k = 0; k < v.size(); ++k) {
       const auto& sp = spans[k];
       const int r0 = std::max(sp[2], r_lo), r1 = std::min(sp[3], r_hi - 1);
@@ -332,10 +335,10 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   const auto in_cell = std::make_unique_for_overwrite<Listed[]>(entries);
   const auto cell_reach = std::make_unique_for_overwrite<std::array<double, 2>[]>(cells);
   run_tasks(list_threads, static_cast<std::size_t>(bands), [&](std::size_t band) {
+    const auto [r_lo, r_hi] = band_rows(static_cast<int>(band));
     const std::size_t row_cells = cells / static_cast<std::size_t>(grid.rows());
-    const std::size_t lo = row_cells * static_cast<std::size_t>(grid.rows() * static_cast<int>(band) / bands);
-    const std::size_t hi = row_cells * static_cast<std::size_t>(grid.rows() * (static_cast<int>(band) + 1) / bands);
-    std::fill(cell_reach.get() + lo, cell_reach.get() + hi, std::array<double, 2>{0.0, 0.0});
+    std::fill(cell_reach.get() + row_cells * static_cast<std::size_t>(r_lo),
+              cell_reach.get() + row_cells * static_cast<std::size_t>(r_hi), std::array<double, 2>{0.0, 0.0});
     for_each_in_band(static_cast<int>(band), [&](std::size_t k, int c, int r) {
       in_cell[static_cast<std::size_t>(start[list(k, c, r)]++)] = {v[k].at.x, v[k].at.y, static_cast<int>(k)};
       auto& reach = cell_reach[static_cast<std::size_t>(grid.cell(c, r))];
@@ -370,7 +373,8 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
         const double ty = std::max(rounded_up(cell_reach[cell][1] + ary), DBL_MIN) * (1 + 0x1p-50);
         for (int k = s; k < end; ++k) {
           const Listed& l = in_cell[static_cast<std::size_t>(k)];
-          if ((tx < x0 - l.x) | (tx < l.x - x1) | (ty < y0 - l.y) | (ty < l.y - y1) | (l.k == e[0]) | (l.k == e[1])) continue;
+          const bool apart = (tx < x0 - l.x) | (tx < l.x - x1) | (ty < y0 - l.y) | (ty < l.y - y1);
+          if (apart | (l.k == e[0]) | (l.k == e[1])) continue;
           if (!clear_of_edge(v[static_cast<std::size_t>(l.k)], a, b)) return false;
         }
         return work <= part_budget;

@@ -76,7 +76,9 @@ class WktText {
       const int orientation = io_detail::ring_orientation(ring);
       const bool reverse = orientation != 0 && (orientation > 0) != counterclockwise;
       const std::size_t visits = ring.size() + 1;
-      for (std::size_t from = 0; from < visits; from += kRun) pieces_.push_back({&ring, reverse, from, std::min(visits, from + kRun)});
+      for (std::size_t from = 0; from < visits; from += kRun) {
+        pieces_.push_back({&ring, reverse, from, std::min(visits, from + kRun)});
+      }
     }
     literal(")");
   }
@@ -127,7 +129,9 @@ class WktText {
         // from two threads made each append wait for the other thread's.
         std::string buffer = std::move(mine[j]);
         buffer.clear();
-        for (std::size_t i = g == 0 ? 0 : group_end[g - 1]; i < group_end[g]; ++i) append(buffer, pieces_[i], literals_);
+        for (std::size_t i = g == 0 ? 0 : group_end[g - 1]; i < group_end[g]; ++i) {
+          append(buffer, pieces_[i], literals_);
+        }
         mine[j] = std::move(buffer);
       });
       pending = count;
