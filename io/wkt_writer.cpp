@@ -24,8 +24,6 @@ namespace mk {
 
 namespace {
 
-using io_detail::append_double;
-
 // Asks the kernel to back a large text's buffer with huge pages where it does so on request
 // (Linux's transparent huge pages in "madvise" mode): writing 35 MB faulted in 4 KiB pages
 // one by one took about a fifth of writing blob 1e6. Only a hint: nothing changes if refused.
@@ -41,10 +39,16 @@ void advise_huge_pages(std::string& text) {
 #endif
 }
 
+// "x y" at `at` (room for 2 kMaxDoubleText + 1 characters); returns its end.
+char* put_point(char* at, const Point& p) {
+  at = io_detail::put_double(at, p.x);
+  *at++ = ' ';
+  return io_detail::put_double(at, p.y);
+}
+
 void append_point(std::string& out, const Point& p) {
-  append_double(out, p.x);
-  out.push_back(' ');
-  append_double(out, p.y);
+  char buf[2 * io_detail::kMaxDoubleText + 1];
+  out.append(buf, put_point(buf, p));
 }
 
 // ", x y" at most (the separator, two doubles and a space).
@@ -170,10 +174,7 @@ class WktText {
         *at++ = ',';
         *at++ = ' ';
       }
-      const Point& q = ring[p.reverse ? (n - k) % n : k];
-      at = io_detail::put_double(at, q.x);
-      *at++ = ' ';
-      at = io_detail::put_double(at, q.y);
+      at = put_point(at, ring[p.reverse ? (n - k) % n : k]);
     }
     out.resize(static_cast<std::size_t>(at - out.data()));
   }
