@@ -387,28 +387,7 @@ inline bool nearest_crossing_extended(const Point& a0, const Point& a1, const Po
 // The stages after the extended-precision one: the double-double filter, then exact
 // expansions (see nearest_crossing).
 inline bool nearest_crossing_expansions(const Point& a0, const Point& a1, const Point& b0, const Point& b1, Point& out,
-                                        Point* tail = nullptr, double* tail_err = nullptr);
-
-}  // namespace crossing_rounding
-
-// The nearest doubles (ties to even) to the crossing point of segments a0a1 and b0b1, which
-// cross properly. Returns false when the inputs are out of this method's range (magnitudes
-// more than about 2^330 apart, or a crossing point far smaller than the inputs, or one in
-// the subnormal range); the caller then rounds the exact rational. With `tail`, also an
-// estimate of the exact crossing minus `out` per axis, and with `tail_err` a bound on the
-// estimate's error (both axes), which the area's filtered sum needs. Three stages: extended
-// precision (without tails only), double-double, exact expansions, each trying only what
-// the one before left open.
-inline bool nearest_crossing(const Point& a0, const Point& a1, const Point& b0, const Point& b1, Point& out,
-                             Point* tail = nullptr, double* tail_err = nullptr) {
-  if (!tail && !tail_err && crossing_rounding::nearest_crossing_extended(a0, a1, b0, b1, out)) return true;
-  return crossing_rounding::nearest_crossing_expansions(a0, a1, b0, b1, out, tail, tail_err);
-}
-
-inline bool crossing_rounding::nearest_crossing_expansions(const Point& a0, const Point& a1, const Point& b0,
-                                                           const Point& b1, Point& out, Point* tail,
-                                                           double* tail_err) {
-  using namespace crossing_rounding;
+                                        Point* tail = nullptr, double* tail_err = nullptr) {
   const std::array<double, 8> in{a0.x, a0.y, a1.x, a1.y, b0.x, b0.y, b1.x, b1.y};
   int top = -100000;
   int unit = 100000;
@@ -486,6 +465,22 @@ inline bool crossing_rounding::nearest_crossing_expansions(const Point& a0, cons
   // Unscaling the tails may round them where they become subnormal.
   if (tail_err) *tail_err = times_power_of_two(std::max(ex, ey), -shift) + 0x1p-1073;
   return true;
+}
+
+}  // namespace crossing_rounding
+
+// The nearest doubles (ties to even) to the crossing point of segments a0a1 and b0b1, which
+// cross properly. Returns false when the inputs are out of this method's range (magnitudes
+// more than about 2^330 apart, or a crossing point far smaller than the inputs, or one in
+// the subnormal range); the caller then rounds the exact rational. With `tail`, also an
+// estimate of the exact crossing minus `out` per axis, and with `tail_err` a bound on the
+// estimate's error (both axes), which the area's filtered sum needs. Three stages: extended
+// precision (without tails only), double-double, exact expansions, each trying only what
+// the one before left open.
+inline bool nearest_crossing(const Point& a0, const Point& a1, const Point& b0, const Point& b1, Point& out,
+                             Point* tail = nullptr, double* tail_err = nullptr) {
+  if (!tail && !tail_err && crossing_rounding::nearest_crossing_extended(a0, a1, b0, b1, out)) return true;
+  return crossing_rounding::nearest_crossing_expansions(a0, a1, b0, b1, out, tail, tail_err);
 }
 
 }  // namespace mk

@@ -69,8 +69,7 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
     // doubles are valid, timed again apart and done as to_output does them: rounding every
     // vertex (with the half-sizes of its box when the certificate of boxes may be asked),
     // and the validity check of the rounded result (certificates, else the full OGC sweep).
-    const bool many_crossings =
-        static_cast<std::size_t>(r.arrangement.num_crossings()) > kFewCrossingsForExactCertificate;
+    const bool many_crossings = rounding_wants_halves(r);
     RoundingHalves halves;
     t = Clock::now();
     const std::vector<std::vector<Point>> nearest =

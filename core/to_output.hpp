@@ -145,6 +145,13 @@ std::vector<std::vector<Point>> rounded_cycles(const BooleanResult<K>& r, unsign
 // (rounding_motion.hpp); beyond, from the boxes first (rounding_boxes.hpp).
 inline constexpr std::size_t kFewCrossingsForExactCertificate = 256;
 
+// Whether rounding should make the boxes' half-sizes as it goes: when the result has more
+// crossings than the exact certificate takes, the box certificate may be asked for them.
+template <Kernel K>
+bool rounding_wants_halves(const BooleanResult<K>& r) {
+  return static_cast<std::size_t>(r.arrangement.num_crossings()) > kFewCrossingsForExactCertificate;
+}
+
 // Whether the result's polygons (each a list of cycle indices: shell, then holes), with
 // their vertices rounded as given, are valid OGC polygons, and its two-sided parts keep two
 // distinct ends. For an exact kernel, first the certificates that rounding moved nothing
@@ -234,7 +241,7 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsig
   out.unbounded = r.unbounded;
   // The boxes' half-sizes are made while rounding when the box certificate may be asked.
   RoundingHalves halves;
-  const bool many_crossings = static_cast<std::size_t>(r.arrangement.num_crossings()) > kFewCrossingsForExactCertificate;
+  const bool many_crossings = rounding_wants_halves(r);
   std::vector<std::vector<Point>> rounded = detail::rounded_cycles(r, threads, many_crossings ? &halves : nullptr);
   const std::vector<std::vector<int>> polygon_cycles = result_polygon_cycles(r);
   // The polygons copy the rounded cycles while the validity check reads them, on a thread of
