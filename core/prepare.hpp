@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -194,6 +196,14 @@ int append_distinct(std::vector<typename K::Point>& points, std::vector<int>& x_
   } else if (K::compare_y(points.back(), q) != Sign::zero) {
     x_rank.push_back(x_rank.back());
   } else {
+    if constexpr (std::is_same_v<typename K::Point, Point>) {
+      // Equal points differ at most in the signs of their zeros: +0 is kept wherever one of
+      // them has it, so that the point kept does not depend on the order they come in (the
+      // sort's, whose halves are sorted on two threads when there are several).
+      Point& kept = points.back();
+      if (kept.x == 0 && std::signbit(kept.x)) kept.x = q.x;
+      if (kept.y == 0 && std::signbit(kept.y)) kept.y = q.y;
+    }
     return static_cast<int>(points.size()) - 1;
   }
   points.push_back(q);
@@ -260,7 +270,8 @@ void merge_runs(std::vector<PointRun<typename K::Point>>& runs, std::vector<type
 // (distinct, sorted), their x-ranks and id_of (input number, counted polygon after polygon
 // and ring after ring -> id). Returns false, having done nothing, when there are more than
 // `max_runs` runs. (Merging the points below a median key and the others on two threads
-// was tried: slower whenever the second core is busy, and little faster when it is not.)
+// was tried twice: slower whenever the second core is busy, and little faster when it is
+// not; appending the upper half and moving its ids up costs what the second thread saves.)
 template <Kernel K>
 bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point>*, 2>& in, std::size_t max_runs,
                            std::vector<typename K::Point>& points, std::vector<int>& x_rank, std::vector<int>& id_of) {
@@ -317,10 +328,30 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
         for (const auto& q : ring) sorted.emplace_back(q, static_cast<int>(sorted.size()));
       }
     }
-    std::sort(sorted.begin(), sorted.end(),
-              [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; });
+    // The halves sorted on two threads, then merged (append_distinct keeps the same point
+    // for equal ones in any order).
+    const auto less = [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; };
     arr.x_rank.reserve(total);
-    for (const auto& [q, input] : sorted) id_of[input] = detail::append_distinct<K>(arr.points, arr.x_rank, q);
+    const auto take = [&](const std::pair<typename K::Point, int>& e) {
+      id_of[e.second] = detail::append_distinct<K>(arr.points, arr.x_rank, e.first);
+    };
+    if (threads_for(total, threads) < 2) {
+      std::sort(sorted.begin(), sorted.end(), less);
+      for (const auto& e : sorted) take(e);
+    } else {
+      const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(total / 2);
+      run_tasks(2, 2, [&](std::size_t half) {
+        if (half == 0) {
+          std::sort(sorted.begin(), mid, less);
+        } else {
+          std::sort(mid, sorted.end(), less);
+        }
+      });
+      auto i = sorted.begin(), j = mid;
+      while (i != mid && j != sorted.end()) take(less(*j, *i) ? *j++ : *i++);
+      for (; i != mid; ++i) take(*i);
+      for (; j != sorted.end(); ++j) take(*j);
+    }
   }
 
   // A and B are made vertex-complete and split into cycles independently (on two threads

@@ -61,6 +61,9 @@ void check_finite_crossing(const Arrangement<K>& arr, const typename K::Vertex& 
                       " of B is not finite in its arithmetic");
 }
 
+// Up to this many points to insert into one edge are sorted by insertion (step 3's fragments).
+inline constexpr std::size_t kFewOnEdge = 16;
+
 template <Kernel K>
 void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::sweep, unsigned threads = 1) {
   auto& ea = arr.polygon[0].edges;
@@ -155,10 +158,29 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
         if (ins.take(e, on_edge)) {
           const auto& s = arr.points[edge.src];
           const auto& d = arr.points[edge.dst];
-          std::sort(on_edge.begin(), on_edge.end(), [&](int x, int y) {
+          const auto before = [&](int x, int y) {
             return x != y && K::compare_along(s, d, arr.vertex(x), arr.vertex(y)) == Sign::negative;
-          });
-          on_edge.erase(std::unique(on_edge.begin(), on_edge.end()), on_edge.end());
+          };
+          if (on_edge.size() <= kFewOnEdge) {
+            // Usually one point, repeated once per edge of the other polygon through it:
+            // sorted by insertion, repeats dropped, without std::sort's set-up (a copy of
+            // the comparison that stalled on its own stores, GCC 12).
+            std::size_t m = 0;
+            for (std::size_t i = 0; i < on_edge.size(); ++i) {
+              const int id = on_edge[i];
+              if (std::find(on_edge.begin(), on_edge.begin() + static_cast<std::ptrdiff_t>(m), id) !=
+                  on_edge.begin() + static_cast<std::ptrdiff_t>(m)) {
+                continue;
+              }
+              std::size_t k = m++;
+              for (; k > 0 && before(id, on_edge[k - 1]); --k) on_edge[k] = on_edge[k - 1];
+              on_edge[k] = id;
+            }
+            on_edge.resize(m);
+          } else {
+            std::sort(on_edge.begin(), on_edge.end(), before);
+            on_edge.erase(std::unique(on_edge.begin(), on_edge.end()), on_edge.end());
+          }
           for (const int id : on_edge) {
             detail::add_fragment(fragments, from, id, e);
             from = id;

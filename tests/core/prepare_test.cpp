@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <random>
 #include <vector>
@@ -170,6 +173,56 @@ TEST(Prepare, NumberingByMergedRunsEqualsNumberingBySort) {
     EXPECT_TRUE(untouched_ranks.empty());
     EXPECT_TRUE(std::all_of(ids.begin(), ids.end(), [](int v) { return v == -1; }));
   }
+}
+
+// Many small rings (too many runs to merge: the points are sorted, on two threads when there
+// are enough), the same corners repeated with zeros of both signs: the same ids, x-ranks and
+// points, bit for bit, on one thread and on two, and each point kept with +0 wherever one of
+// its copies has +0.
+TEST(Prepare, SortedNumberingIsTheSameOnAnyNumberOfThreadsWithSignedZeros) {
+  using K = ExactKernel;
+  std::mt19937 rng(7);
+  const auto zero_or = [&](double v) { return v == 0 && (rng() & 1) ? -0.0 : v; };
+  std::array<Polygon, 2> poly;
+  for (auto& p : poly) {
+    for (int r = 0; r < 6000; ++r) {
+      const double x = static_cast<double>(static_cast<int>(rng() % 41) - 20);
+      const double y = static_cast<double>(static_cast<int>(rng() % 41) - 20);
+      p.rings.push_back({{zero_or(x), zero_or(y)}, {zero_or(x + 1), zero_or(y)}, {zero_or(x + 1), zero_or(y + 1)}});
+    }
+  }
+  // Per distinct point: whether some copy has +0 in x, in y.
+  std::vector<std::pair<Point, std::array<bool, 2>>> seen;
+  for (const auto& p : poly) {
+    for (const auto& ring : p.rings) {
+      for (const Point& q : ring) {
+        auto it = std::find_if(seen.begin(), seen.end(), [&](const auto& e) { return e.first.x == q.x && e.first.y == q.y; });
+        if (it == seen.end()) it = seen.insert(seen.end(), {q, {false, false}});
+        it->second[0] = it->second[0] || (q.x == 0 && !std::signbit(q.x));
+        it->second[1] = it->second[1] || (q.y == 0 && !std::signbit(q.y));
+      }
+    }
+  }
+  ASSERT_GE(3 * 2 * 6000, static_cast<int>(kParallelWork));
+  const Arrangement<K> one = prepare<K>(poly[0], poly[1], PairSearch::sweep, 1);
+  const Arrangement<K> two = prepare<K>(poly[0], poly[1], PairSearch::sweep, 2);
+  ASSERT_EQ(one.points.size(), seen.size());
+  ASSERT_EQ(two.points.size(), seen.size());
+  EXPECT_EQ(one.x_rank, two.x_rank);
+  for (std::size_t i = 0; i < one.points.size(); ++i) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(one.points[i].x), std::bit_cast<std::uint64_t>(two.points[i].x)) << i;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(one.points[i].y), std::bit_cast<std::uint64_t>(two.points[i].y)) << i;
+    const Point& q = one.points[i];
+    const auto it = std::find_if(seen.begin(), seen.end(), [&](const auto& e) { return e.first.x == q.x && e.first.y == q.y; });
+    ASSERT_NE(it, seen.end());
+    if (q.x == 0) {
+      EXPECT_EQ(!std::signbit(q.x), it->second[0]) << i;
+    }
+    if (q.y == 0) {
+      EXPECT_EQ(!std::signbit(q.y), it->second[1]) << i;
+    }
+  }
+  for (int p = 0; p < 2; ++p) EXPECT_EQ(one.polygon[p].cycles, two.polygon[p].cycles);
 }
 
 }  // namespace
