@@ -129,7 +129,7 @@ class CandidatePairs {
   };
   enum class Place : unsigned char { below, above, across };
 
-  static constexpr std::size_t kDirect = 48;  // sets this small (or pairs of sets) are paired directly
+  static constexpr std::size_t kDirect = 128;  // sets this small (or pairs of sets) are paired directly
   static constexpr int kMaxDepth = 96;
   static constexpr int kPrefetch = 32;  // items ahead whose points build_chains asks for
 
