@@ -61,6 +61,27 @@ inline std::uint64_t segment_key(int u, int w) {
   return (lo << 32) | hi;
 }
 
+// The crossings and touching points between A and B that the preparation's pair search
+// found, searching both polygons at once (prepare.hpp), for step 3 to use instead of a search
+// of its own when every ring stayed as it was: nothing inserted, each ring one cycle. Edges
+// are numbered polygon by polygon, ring after ring in input order (rings of one point have
+// none), as the rings ran in the input; a cycle's first point tells step 3 whether step 1
+// turned it.
+template <class Vertex>
+struct EarlyIntersections {
+  struct Crossing {
+    int a, b;  // edge numbers in A and B
+    Vertex vertex;
+  };
+  struct Part {  // what one part of the search found, in its order
+    std::vector<Crossing> crossings;
+    std::array<std::vector<std::pair<int, int>>, 2> inserted;  // per polygon: (edge number, point id)
+  };
+  bool found = false;
+  std::vector<Part> parts;
+  std::array<std::vector<int>, 2> ring_start;  // per polygon, per cycle: its first point as input
+};
+
 template <Kernel K>
 struct Arrangement {
   // Input points of A and B, deduplicated; the id of a point is its index, and ids follow
@@ -71,6 +92,8 @@ struct Arrangement {
   // The proper crossings: vertex id num_points() + i is crossings[i].
   std::vector<typename K::Vertex> crossings;
   std::array<PreparedPolygon, 2> polygon;
+  // Step 3's findings made while preparing, when they hold (see EarlyIntersections).
+  EarlyIntersections<typename K::Vertex> early;
 
   int num_points() const { return static_cast<int>(points.size()); }
   bool is_input_point(int id) const { return id < num_points(); }

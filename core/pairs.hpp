@@ -88,7 +88,7 @@ class CandidatePairs {
   // `x_rank` gives each point id the rank of its x among the distinct x values.
   // The chains are made on up to `threads` threads (the same chains on any number).
   CandidatePairs(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
-                 const std::vector<SweepItem>& items, bool bipartite, PairSearch search, unsigned threads = 1)
+                 std::span<const SweepItem> items, bool bipartite, PairSearch search, unsigned threads = 1)
       : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite), search_(search) {
     if (search_ == PairSearch::sweep) {
       build_chains(threads);
@@ -589,7 +589,7 @@ class CandidatePairs {
 
   const std::vector<typename K::Point>& pts_;
   const std::vector<int>& x_rank_;
-  const std::vector<SweepItem>& items_;
+  std::span<const SweepItem> items_;  // viewed: must outlive the search
   bool bipartite_;
   PairSearch search_;
   std::vector<detail::Chain> chains_;

@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numeric>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -81,77 +83,63 @@ inline std::string edge_name(const RingEdge& e) {
          std::to_string(e.to);
 }
 
-// Inserts the points of one polygon that touch its own edges (orientable -> vertex-complete)
-// and rejects proper crossings.
-template <Kernel K>
-void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
-                          std::vector<IdRing>& rings, const char* poly_name, PairSearch search, unsigned threads = 1) {
-  std::size_t num_edges = 0;
-  for (const auto& ring : rings) num_edges += ring.ids.size() < 2 ? 0 : ring.ids.size();
-  std::vector<SweepItem> items;
-  items.reserve(num_edges);
+// Appends the items of a polygon's rings (rings of fewer than two points have none).
+inline void add_ring_items(const std::vector<IdRing>& rings, int group, std::vector<SweepItem>& items) {
   for (const auto& ring : rings) {
     const auto& ids = ring.ids;
     if (ids.size() < 2) continue;
     for (std::size_t k = 0; k < ids.size(); ++k) {
       const int u = ids[k];
       const int w = ids[k + 1 < ids.size() ? k + 1 : 0];
-      add_sweep_item(items, u, w, 0, k > 0);
+      add_sweep_item(items, u, w, group, k > 0);
     }
   }
-  // Per part of the pair search (see CandidatePairs): points of the polygon on its own
-  // edges, by edge index, and the first proper crossing. Of the proper crossings, the error
-  // names the one met first walking the rings: the first edge (in input order) that crosses
-  // an earlier one, and the earliest of those, whatever order the search finds them in.
-  CandidatePairs<K> pairs(pts, x_rank, items, false, search, threads);
-  struct Found {
-    EdgeInsertions inserted;
-    std::pair<int, int> crossing{-1, -1};
+}
+
+// What a pair of one polygon's edges (items i and j, numbered within the polygon) says:
+// touching points to insert, or a proper crossing kept when it is the first (see below).
+template <Kernel K>
+void relate_own_edges(const std::vector<typename K::Point>& pts, const SweepItem& a, const SweepItem& b, int i, int j,
+                      EdgeInsertions& inserted, std::pair<int, int>& crossing) {
+  if (a.lo == b.lo && a.hi == b.hi) return;  // identical as sets: allowed [MK89 §2.2]
+  const auto rel = relate_segments_by_id<K>(pts, a.lo, a.hi, b.lo, b.hi);
+  if (rel.proper_crossing) {
+    const std::pair<int, int> c{std::max(i, j), std::min(i, j)};
+    if (crossing.first < 0 || c < crossing) crossing = c;
+    return;
+  }
+  if (rel.c_inside_ab) inserted.add(i, b.lo);
+  if (rel.d_inside_ab) inserted.add(i, b.hi);
+  if (rel.a_inside_cd) inserted.add(j, a.lo);
+  if (rel.b_inside_cd) inserted.add(j, a.hi);
+}
+
+// Throws the error for a proper crossing of a polygon's own edges (item numbers within the
+// polygon): of the proper crossings, the one met first walking the rings, the first edge (in
+// input order) that crosses an earlier one, and the earliest of those, whatever order the
+// search found them in.
+inline void throw_own_crossing(const std::vector<IdRing>& rings, std::pair<int, int> crossing, const char* poly_name) {
+  // The ring and the position in it of an item (items follow the rings of 2+ points).
+  const auto ring_edge_of = [&](int item) {
+    int r = 0;
+    for (;; ++r) {
+      const int n = rings[r].ids.size() < 2 ? 0 : static_cast<int>(rings[r].ids.size());
+      if (item < n) break;
+      item -= n;
+    }
+    return ring_edge(rings[r], r, static_cast<std::size_t>(item));
   };
-  std::vector<Found> found(pairs.parts());
-  run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
-    Found& out = found[part];
-    pairs.for_each_in_part(part, [&](int i, int j) {
-      const SweepItem& a = items[i];
-      const SweepItem& b = items[j];
-      if (a.lo == b.lo && a.hi == b.hi) return;  // identical as sets: allowed [MK89 §2.2]
-      const auto rel = relate_segments_by_id<K>(pts, a.lo, a.hi, b.lo, b.hi);
-      if (rel.proper_crossing) {
-        const std::pair<int, int> c{std::max(i, j), std::min(i, j)};
-        if (out.crossing.first < 0 || c < out.crossing) out.crossing = c;
-        return;
-      }
-      if (rel.c_inside_ab) out.inserted.add(i, b.lo);
-      if (rel.d_inside_ab) out.inserted.add(i, b.hi);
-      if (rel.a_inside_cd) out.inserted.add(j, a.lo);
-      if (rel.b_inside_cd) out.inserted.add(j, a.hi);
-    });
-  });
-  EdgeInsertions inserted;
-  std::pair<int, int> crossing{-1, -1};
-  for (Found& f : found) {
-    if (f.crossing.first >= 0 && (crossing.first < 0 || f.crossing < crossing)) crossing = f.crossing;
-    inserted.append(std::move(f.inserted));
-  }
-  if (crossing.first >= 0) {
-    // The ring and the position in it of an item (items follow the rings of 2+ points).
-    const auto ring_edge_of = [&](int item) {
-      int r = 0;
-      for (;; ++r) {
-        const int n = rings[r].ids.size() < 2 ? 0 : static_cast<int>(rings[r].ids.size());
-        if (item < n) break;
-        item -= n;
-      }
-      return ring_edge(rings[r], r, static_cast<std::size_t>(item));
-    };
-    const RingEdge first = ring_edge_of(crossing.first);
-    const RingEdge second = ring_edge_of(crossing.second);
-    throw CrossingEdges(poly_name[0] == 'A' ? 0 : 1, first, second,
-                        std::string("polygon ") + poly_name + ": " + edge_name(first) + " crosses " +
-                            edge_name(second) + "; edges of a polygon may touch but must not cross");
-  }
+  const RingEdge first = ring_edge_of(crossing.first);
+  const RingEdge second = ring_edge_of(crossing.second);
+  throw CrossingEdges(poly_name[0] == 'A' ? 0 : 1, first, second,
+                      std::string("polygon ") + poly_name + ": " + edge_name(first) + " crosses " + edge_name(second) +
+                          "; edges of a polygon may touch but must not cross");
+}
+
+// Inserts into the rings the points found on their edges (by item number within the polygon).
+inline void insert_touching_points(std::vector<IdRing>& rings, EdgeInsertions& inserted, int num_items) {
   if (inserted.empty()) return;
-  inserted.group(static_cast<int>(items.size()));
+  inserted.group(num_items);
   std::vector<int> ins;
   int e = 0;
   for (auto& ring : rings) {
@@ -182,6 +170,127 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
     }
     ring = std::move(out);
   }
+}
+
+// Inserts the points of one polygon that touch its own edges (orientable -> vertex-complete)
+// and rejects proper crossings.
+template <Kernel K>
+void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
+                          std::vector<IdRing>& rings, const char* poly_name, PairSearch search, unsigned threads = 1) {
+  std::vector<SweepItem> items;
+  add_ring_items(rings, 0, items);
+  // Per part of the pair search (see CandidatePairs): points of the polygon on its own
+  // edges, by edge index, and the first proper crossing.
+  CandidatePairs<K> pairs(pts, x_rank, items, false, search, threads);
+  struct Found {
+    EdgeInsertions inserted;
+    std::pair<int, int> crossing{-1, -1};
+  };
+  std::vector<Found> found(pairs.parts());
+  run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
+    Found& out = found[part];
+    pairs.for_each_in_part(part, [&](int i, int j) { relate_own_edges<K>(pts, items[i], items[j], i, j, out.inserted, out.crossing); });
+  });
+  EdgeInsertions inserted;
+  std::pair<int, int> crossing{-1, -1};
+  for (Found& f : found) {
+    if (f.crossing.first >= 0 && (crossing.first < 0 || f.crossing < crossing)) crossing = f.crossing;
+    inserted.append(std::move(f.inserted));
+  }
+  if (crossing.first >= 0) throw_own_crossing(rings, crossing, poly_name);
+  insert_touching_points(rings, inserted, static_cast<int>(items.size()));
+}
+
+// Both polygons made vertex-complete by one pair search over the edges of both, which also
+// finds what step 3 looks for, the crossings and touching points between A and B: kept in
+// arr.early when no point had to be inserted (every edge then is one of step 3's), dropped
+// otherwise (step 3 then searches the vertex-complete edges). One search instead of three:
+// the chains of every edge are made once. The errors are those of make_vertex_complete, A's
+// first.
+template <Kernel K>
+void make_both_vertex_complete(Arrangement<K>& arr, std::array<std::vector<IdRing>, 2>& rings, PairSearch search,
+                               unsigned threads) {
+  const auto& pts = arr.points;
+  // The items, A's then B's, each polygon's made on its own thread into an array not zeroed
+  // first.
+  std::array<int, 2> num_items{0, 0};
+  for (int g = 0; g < 2; ++g) {
+    for (const auto& ring : rings[g]) num_items[g] += ring.ids.size() < 2 ? 0 : static_cast<int>(ring.ids.size());
+  }
+  const int na = num_items[0];
+  const std::array<int, 2> first_item{0, na};
+  const auto item_array = std::make_unique_for_overwrite<SweepItem[]>(static_cast<std::size_t>(na + num_items[1]));
+  run_tasks(threads_for(static_cast<std::size_t>(na + num_items[1]), threads), 2, [&](std::size_t g) {
+    SweepItem* out = item_array.get() + first_item[g];
+    for (const auto& ring : rings[g]) {
+      const auto& ids = ring.ids;
+      if (ids.size() < 2) continue;
+      for (std::size_t k = 0; k < ids.size(); ++k, ++out) {
+        const int u = ids[k];
+        const int w = ids[k + 1 < ids.size() ? k + 1 : 0];
+        out->lo = std::min(u, w);
+        out->hi = std::max(u, w);
+        out->group = static_cast<int>(g);
+        out->forward = u < w;
+        out->continues = k > 0;
+      }
+    }
+  });
+  const std::span<const SweepItem> items(item_array.get(), static_cast<std::size_t>(na + num_items[1]));
+  CandidatePairs<K> pairs(pts, arr.x_rank, items, false, search, threads);
+  struct Found {
+    std::array<EdgeInsertions, 2> inserted;
+    std::array<std::pair<int, int>, 2> crossing{{{-1, -1}, {-1, -1}}};
+    typename EarlyIntersections<typename K::Vertex>::Part early;
+  };
+  std::vector<Found> found(pairs.parts());
+  run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
+    Found& out = found[part];
+    pairs.for_each_in_part(part, [&](int i, int j) {
+      if (i > j) std::swap(i, j);  // A's items come first
+      const SweepItem& a = items[i];
+      const SweepItem& b = items[j];
+      if (a.group == b.group) {
+        const int g = a.group;
+        relate_own_edges<K>(pts, a, b, i - first_item[g], j - first_item[g], out.inserted[g], out.crossing[g]);
+        return;
+      }
+      // An edge of A and one of B, as step 3 relates them.
+      if (a.lo == b.lo && a.hi == b.hi) return;  // a shared edge
+      const int jb = j - na;
+      const auto rel = relate_segments_by_id<K>(pts, a.lo, a.hi, b.lo, b.hi);
+      if (rel.proper_crossing) {
+        auto& c = out.early.crossings.emplace_back();
+        c.a = i;
+        c.b = jb;
+        c.vertex = K::crossing(pts[a.lo], pts[a.hi], pts[b.lo], pts[b.hi]);
+        return;
+      }
+      if (rel.c_inside_ab) out.early.inserted[0].emplace_back(i, b.lo);
+      if (rel.d_inside_ab) out.early.inserted[0].emplace_back(i, b.hi);
+      if (rel.a_inside_cd) out.early.inserted[1].emplace_back(jb, a.lo);
+      if (rel.b_inside_cd) out.early.inserted[1].emplace_back(jb, a.hi);
+    });
+  });
+  std::array<EdgeInsertions, 2> inserted;
+  std::array<std::pair<int, int>, 2> crossing{{{-1, -1}, {-1, -1}}};
+  for (Found& f : found) {
+    for (int g = 0; g < 2; ++g) {
+      if (f.crossing[g].first >= 0 && (crossing[g].first < 0 || f.crossing[g] < crossing[g])) crossing[g] = f.crossing[g];
+      inserted[g].append(std::move(f.inserted[g]));
+    }
+  }
+  for (int g = 0; g < 2; ++g) {
+    if (crossing[g].first >= 0) throw_own_crossing(rings[g], crossing[g], g == 0 ? "A" : "B");
+  }
+  arr.early = {};
+  if (inserted[0].empty() && inserted[1].empty()) {
+    arr.early.found = true;
+    arr.early.parts.reserve(found.size());
+    for (Found& f : found) arr.early.parts.push_back(std::move(f.early));
+    return;
+  }
+  for (int g = 0; g < 2; ++g) insert_touching_points(rings[g], inserted[g], num_items[g]);
 }
 
 // Appends q to `points` (distinct, in lexicographic order so far, q not smaller than the
@@ -354,39 +463,72 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
     }
   }
 
-  // A and B are made vertex-complete and split into cycles independently (on two threads
-  // when there are several), each with its own marks per point.
+  // Each polygon's rings as point ids (on two threads when there are several).
   std::array<std::size_t, 2> first_ref{0, 0};  // input number of each polygon's first vertex
   for (const auto& ring : a.rings) first_ref[1] += ring.size();
   const unsigned per_polygon = threads_for(total, threads) > 1 ? (threads + 1) / 2 : 1;
+  std::array<std::vector<detail::IdRing>, 2> rings;
+  run_tasks(threads_for(total, threads), 2, [&](std::size_t p) {
+    std::size_t ref = first_ref[p];
+    rings[p].resize(in[p]->rings.size());
+    for (std::size_t r = 0; r < rings[p].size(); ++r) {
+      auto& ring = rings[p][r];
+      ring.ids.reserve(in[p]->rings[r].size());
+      ring.input_index.reserve(in[p]->rings[r].size());
+      for (std::size_t v = 0; v < in[p]->rings[r].size(); ++v, ++ref) {
+        const int id = id_of[ref];
+        if (!ring.ids.empty() && ring.ids.back() == id) continue;  // duplicate consecutive vertex
+        ring.ids.push_back(id);
+        ring.input_index.push_back(static_cast<int>(v));
+      }
+      while (ring.ids.size() > 1 && ring.ids.back() == ring.ids.front()) {  // closing vertex repeated
+        ring.ids.pop_back();
+        ring.input_index.pop_back();
+      }
+    }
+  });
+  // Vertex-complete: exact kernels search both polygons at once and keep what step 3 would
+  // find (make_both_vertex_complete); the others (whose crossings may fail, which step 3
+  // reports after these errors) search each polygon on its own.
+  if constexpr (K::is_exact) {
+    detail::make_both_vertex_complete<K>(arr, rings, search, threads);
+  } else {
+    run_tasks(threads_for(total, threads), 2, [&](std::size_t p) {
+      detail::make_vertex_complete<K>(arr.points, arr.x_rank, rings[p], p == 0 ? "A" : "B", search, per_polygon);
+    });
+  }
+  // Each ring's first point, and how many points the rings of two or more hold.
+  std::array<std::size_t, 2> ring_points{0, 0}, long_rings{0, 0};
+  if (arr.early.found) {
+    for (std::size_t p = 0; p < 2; ++p) {
+      for (const auto& ring : rings[p]) {
+        if (ring.ids.size() < 2) continue;
+        arr.early.ring_start[p].push_back(ring.ids[0]);
+        ring_points[p] += ring.ids.size();
+        ++long_rings[p];
+      }
+    }
+  }
+  // Split into cycles, each polygon with its own marks per point.
   run_tasks(threads_for(total, threads), 2, [&](std::size_t p) {
     PreparedPolygon& out = arr.polygon[p];
     out.type = in[p]->type;
-    std::size_t ref = first_ref[p];
-    std::vector<detail::IdRing> rings(in[p]->rings.size());
-    for (std::size_t r = 0; r < rings.size(); ++r) {
-      rings[r].ids.reserve(in[p]->rings[r].size());
-      rings[r].input_index.reserve(in[p]->rings[r].size());
-      for (std::size_t v = 0; v < in[p]->rings[r].size(); ++v, ++ref) {
-        const int id = id_of[ref];
-        auto& ids = rings[r].ids;
-        if (!ids.empty() && ids.back() == id) continue;  // duplicate consecutive vertex
-        ids.push_back(id);
-        rings[r].input_index.push_back(static_cast<int>(v));
-      }
-      auto& ids = rings[r].ids;
-      while (ids.size() > 1 && ids.back() == ids.front()) {  // closing vertex repeated
-        ids.pop_back();
-        rings[r].input_index.pop_back();
-      }
-    }
-    detail::make_vertex_complete<K>(arr.points, arr.x_rank, rings, p == 0 ? "A" : "B", search, per_polygon);
     std::vector<int> where(arr.points.size(), -1);
-    for (std::size_t r = 0; r < rings.size(); ++r) {
-      if (rings[r].ids.empty()) continue;
-      detail::split_into_cycles(std::move(rings[r]), static_cast<int>(r), where, out);
+    for (std::size_t r = 0; r < rings[p].size(); ++r) {
+      if (rings[p][r].ids.empty()) continue;
+      detail::split_into_cycles(std::move(rings[p][r]), static_cast<int>(r), where, out);
     }
   });
+  // Step 3's findings hold when each ring of two or more points is one cycle, whole: as
+  // many cycles, as many points in them (a ring that splits makes more cycles, or drops
+  // points into one-point cycles).
+  if (arr.early.found) {
+    for (std::size_t p = 0; p < 2; ++p) {
+      std::size_t cycle_points = 0;
+      for (const auto& cycle : arr.polygon[p].cycles) cycle_points += cycle.size();
+      if (arr.polygon[p].cycles.size() != long_rings[p] || cycle_points != ring_points[p]) arr.early = {};
+    }
+  }
   return arr;
 }
 

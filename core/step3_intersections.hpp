@@ -64,12 +64,54 @@ void check_finite_crossing(const Arrangement<K>& arr, const typename K::Vertex& 
 // Up to this many points to insert into one edge are sorted by insertion (step 3's fragments).
 inline constexpr std::size_t kFewOnEdge = 16;
 
+// Step 3's crossings and touching points as the preparation found them (arr.early): edge
+// numbers in input ring order turned into edge indices (a cycle that step 1 turned has its
+// edges in reverse), one id per crossing point as below, in the order they were found.
+template <Kernel K>
+void take_early_intersections(Arrangement<K>& arr, std::array<EdgeInsertions, 2>& inserted) {
+  std::array<std::vector<int>, 2> edge_of;  // per polygon: edge number as input -> edge index
+  for (int g = 0; g < 2; ++g) {
+    const PreparedPolygon& poly = arr.polygon[g];
+    edge_of[g].resize(poly.edges.size());
+    for (std::size_t c = 0; c + 1 < poly.cycle_first_edge.size(); ++c) {
+      const int first = poly.cycle_first_edge[c];
+      const int n = poly.cycle_first_edge[c + 1] - first;
+      // Turned: the ring v0 .. v(n-1) is now v(n-1) .. v0, and its edge k (v(k), v(k+1)) is
+      // edge n - 2 - k, the closing one staying last.
+      const bool turned = poly.cycles[c][0] != arr.early.ring_start[g][c];
+      for (int k = 0; k < n; ++k) edge_of[g][static_cast<std::size_t>(first + k)] = first + (turned && k < n - 1 ? n - 2 - k : k);
+    }
+  }
+  const auto& ea = arr.polygon[0].edges;
+  const auto& eb = arr.polygon[1].edges;
+  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
+  for (auto& part : arr.early.parts) {
+    for (auto& c : part.crossings) {
+      const int ia = edge_of[0][static_cast<std::size_t>(c.a)];
+      const int jb = edge_of[1][static_cast<std::size_t>(c.b)];
+      const Edge& a = ea[ia];
+      const Edge& b = eb[jb];
+      const auto key = std::make_pair(segment_key(a.src, a.dst), segment_key(b.src, b.dst));
+      auto [it, fresh] = crossing_id.try_emplace(key, arr.num_vertices());
+      if (fresh) arr.crossings.push_back(std::move(c.vertex));
+      inserted[0].add(ia, it->second);
+      inserted[1].add(jb, it->second);
+    }
+    for (int g = 0; g < 2; ++g) {
+      for (const auto& [e, v] : part.inserted[g]) inserted[g].add(edge_of[g][static_cast<std::size_t>(e)], v);
+    }
+  }
+  arr.early = {};
+}
+
 template <Kernel K>
 void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::sweep, unsigned threads = 1) {
   auto& ea = arr.polygon[0].edges;
   auto& eb = arr.polygon[1].edges;
   std::array<EdgeInsertions, 2> inserted;  // per polygon, by edge index
-  {  // the sweep's items are released before the fragments are built, which reuse their memory
+  if (arr.early.found) {
+    take_early_intersections(arr, inserted);
+  } else {  // the sweep's items are released before the fragments are built, which reuse their memory
     std::vector<SweepItem> items;
     items.reserve(ea.size() + eb.size());
     for (int g = 0; g < 2; ++g) {

@@ -406,5 +406,62 @@ TEST(EfRuns, SameCyclesBitForBitAsFragmentByFragment) {
   std::cout << runs_made << " runs in " << cycles << " cycles\n";
 }
 
+// Step 3 with the crossings and touching points the preparation found (one pair search over
+// both polygons, kept when nothing was inserted and every ring stayed one cycle) makes the
+// same fragments as step 3's own search of the vertex-complete edges: per polygon, fragment
+// by fragment, the same edge and the same exact end points, for every operation (step 1
+// turns cycles, difference turns B), on one thread and on two. Both paths are taken.
+TEST(EarlyIntersections, SameFragmentsAsStepThreesOwnSearch) {
+  std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> inputs = large_inputs();
+  std::mt19937_64 rng(43);
+  const std::vector<Polygon> soups = segment_soups(rng);
+  for (std::size_t i = 0; i < soups.size(); ++i) {
+    inputs.push_back({"soup " + std::to_string(i), {soups[i], soups[(i + 2) % soups.size()]}});
+  }
+  for (int k = 0; k < 40; ++k) {
+    inputs.push_back({"random " + std::to_string(k), {random_polygon(rng, true), random_polygon(rng, true)}});
+  }
+  // Where the preparation's findings are dropped: a vertex on an edge of its own polygon (a
+  // point inserted), a ring through one point twice (split into two cycles).
+  const Polygon diamond{{{{1, -1}, {4, 1.5}, {1, 4}, {-2, 1.5}}}, PolygonType::island};
+  inputs.push_back({"t-junction", {Polygon{{square_ring(0, 0, 2, 2), square_ring(2, 1, 3, 3)}, PolygonType::island}, diamond}});
+  inputs.push_back({"pinched", {Polygon{{{{0, 0}, {2, 0}, {1, 1}, {2, 2}, {0, 2}, {1, 1}}}, PolygonType::island}, diamond}});
+  inputs.push_back({"t-junction in B", {diamond, Polygon{{square_ring(0, 0, 2, 2), square_ring(2, 1, 3, 3)}, PolygonType::island}}});
+  const auto fragments = [](const Arrangement<K>& arr, int g) {
+    std::vector<std::string> out;
+    for (const Fragment& f : arr.polygon[g].fragments) {
+      const auto u = K::exact_coordinates(arr.vertex(f.from));
+      const auto w = K::exact_coordinates(arr.vertex(f.to));
+      out.push_back(std::to_string(f.edge) + ": " + u[0] + "," + u[1] + " -> " + w[0] + "," + w[1]);
+    }
+    return out;
+  };
+  int early = 0, searched = 0;
+  for (const auto& [name, ab] : inputs) {
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
+                               Operation::symmetric_difference}) {
+      for (const unsigned threads : {1u, 2u}) {
+        Arrangement<K> with = prepare<K>(to_kernel_polygon<K>(ab.first), to_kernel_polygon<K>(ab.second),
+                                         PairSearch::sweep, threads);
+        Arrangement<K> without = with;
+        (with.early.found ? early : searched) += 1;
+        without.early = {};
+        for (Arrangement<K>* arr : {&with, &without}) {
+          normalize_orientations(*arr, op, threads);
+          build_vertex_rings(*arr);
+          insert_intersections(*arr, PairSearch::sweep, threads);
+        }
+        EXPECT_EQ(with.num_crossings(), without.num_crossings()) << name;
+        for (int g = 0; g < 2; ++g) {
+          EXPECT_EQ(fragments(with, g), fragments(without, g)) << name << " " << operation_name(op) << " polygon " << g;
+        }
+      }
+    }
+  }
+  EXPECT_GT(early, 0);
+  EXPECT_GT(searched, 0);
+  std::cout << early << " arrangements with the preparation's intersections, " << searched << " without\n";
+}
+
 }  // namespace
 }  // namespace mk::test
