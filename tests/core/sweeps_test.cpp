@@ -286,6 +286,19 @@ std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> large_inputs() 
   return out;
 }
 
+// Appends each segment soup paired with the soup `shift` places on, then `randoms` pairs of
+// random polygons.
+void add_soups_and_random_pairs(std::mt19937_64& rng, std::size_t shift, int randoms,
+                                std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>>& inputs) {
+  const std::vector<Polygon> soups = segment_soups(rng);
+  for (std::size_t i = 0; i < soups.size(); ++i) {
+    inputs.push_back({"soup " + std::to_string(i), {soups[i], soups[(i + shift) % soups.size()]}});
+  }
+  for (int k = 0; k < randoms; ++k) {
+    inputs.push_back({"random " + std::to_string(k), {random_polygon(rng, true), random_polygon(rng, true)}});
+  }
+}
+
 // The chains are made in two halves on two threads (cut at a ring's start) once the items
 // are many: the parts and their pairs must come out as on one thread, in the same order.
 TEST(CandidatePairs, SamePairsInTheSameOrderOnOneAndTwoThreads) {
@@ -366,13 +379,7 @@ TEST(EfRuns, SameCyclesBitForBitAsFragmentByFragment) {
   const int n = static_cast<int>(2 * kParallelWork);
   inputs.push_back({"wavy", {wavy_disc(n, 7, 0, 0), wavy_disc(n, 7, 20, 5)}});
   std::mt19937_64 rng(41);
-  const std::vector<Polygon> soups = segment_soups(rng);
-  for (std::size_t i = 0; i < soups.size(); ++i) {
-    inputs.push_back({"soup " + std::to_string(i), {soups[i], soups[(i + 3) % soups.size()]}});
-  }
-  for (int k = 0; k < 60; ++k) {
-    inputs.push_back({"random " + std::to_string(k), {random_polygon(rng, true), random_polygon(rng, true)}});
-  }
+  add_soups_and_random_pairs(rng, 3, 60, inputs);
   std::size_t runs_made = 0, runs_seen = 0, cycles = 0;
   for (const auto& [name, ab] : inputs) {
     for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
@@ -414,13 +421,7 @@ TEST(EfRuns, SameCyclesBitForBitAsFragmentByFragment) {
 TEST(EarlyIntersections, SameFragmentsAsStepThreesOwnSearch) {
   std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> inputs = large_inputs();
   std::mt19937_64 rng(43);
-  const std::vector<Polygon> soups = segment_soups(rng);
-  for (std::size_t i = 0; i < soups.size(); ++i) {
-    inputs.push_back({"soup " + std::to_string(i), {soups[i], soups[(i + 2) % soups.size()]}});
-  }
-  for (int k = 0; k < 40; ++k) {
-    inputs.push_back({"random " + std::to_string(k), {random_polygon(rng, true), random_polygon(rng, true)}});
-  }
+  add_soups_and_random_pairs(rng, 2, 40, inputs);
   // Where the preparation's findings are dropped: a vertex on an edge of its own polygon (a
   // point inserted), a ring through one point twice (split into two cycles).
   const Polygon diamond{{{{1, -1}, {4, 1.5}, {1, 4}, {-2, 1.5}}}, PolygonType::island};
