@@ -34,8 +34,9 @@ struct IdRing {
 };
 
 // Splits a closed sequence of point ids at repeated vertices into cycles with distinct
-// vertices: every closed polyline is a union of irreducible polygons [MK89 §2.2].
-inline void split_into_cycles(IdRing&& ring, int ring_index, std::vector<int>& where, PreparedPolygon& out) {
+// vertices: every closed polyline is a union of irreducible polygons [MK89 §2.2]. Returns
+// whether a ring of two or more points became one cycle as it was.
+inline bool split_into_cycles(IdRing&& ring, int ring_index, std::vector<int>& where, PreparedPolygon& out) {
   const std::size_t n = ring.ids.size();
   if (n >= 2) {  // the common case first: no vertex repeats, and the ring is one cycle
     std::size_t k = 0;
@@ -44,7 +45,7 @@ inline void split_into_cycles(IdRing&& ring, int ring_index, std::vector<int>& w
     if (k == n) {
       out.origins.push_back({ring_index, ring.input_index[0]});
       out.cycles.push_back(std::move(ring.ids));
-      return;
+      return true;
     }
   }
   std::vector<int> stack;
@@ -72,6 +73,7 @@ inline void split_into_cycles(IdRing&& ring, int ring_index, std::vector<int>& w
     }
   }
   for (const int id : stack) where[id] = -1;
+  return n < 2;
 }
 
 inline RingEdge ring_edge(const IdRing& ring, int ring_index, std::size_t k) {
@@ -256,20 +258,16 @@ void make_both_vertex_complete(Arrangement<K>& arr, std::array<std::vector<IdRin
         return;
       }
       // An edge of A and one of B, as step 3 relates them.
-      if (a.lo == b.lo && a.hi == b.hi) return;  // a shared edge
       const int jb = j - na;
-      const auto rel = relate_segments_by_id<K>(pts, a.lo, a.hi, b.lo, b.hi);
-      if (rel.proper_crossing) {
-        auto& c = out.early.crossings.emplace_back();
-        c.a = i;
-        c.b = jb;
-        c.vertex = K::crossing(pts[a.lo], pts[a.hi], pts[b.lo], pts[b.hi]);
-        return;
-      }
-      if (rel.c_inside_ab) out.early.inserted[0].emplace_back(i, b.lo);
-      if (rel.d_inside_ab) out.early.inserted[0].emplace_back(i, b.hi);
-      if (rel.a_inside_cd) out.early.inserted[1].emplace_back(jb, a.lo);
-      if (rel.b_inside_cd) out.early.inserted[1].emplace_back(jb, a.hi);
+      relate_edges_across<K>(
+          pts, a.lo, a.hi, b.lo, b.hi,
+          [&] {
+            auto& c = out.early.crossings.emplace_back();
+            c.a = i;
+            c.b = jb;
+            c.vertex = K::crossing(pts[a.lo], pts[a.hi], pts[b.lo], pts[b.hi]);
+          },
+          [&](int p) { out.early.inserted[0].emplace_back(i, p); }, [&](int p) { out.early.inserted[1].emplace_back(jb, p); });
     });
   });
   std::array<EdgeInsertions, 2> inserted;
@@ -497,36 +495,26 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
       detail::make_vertex_complete<K>(arr.points, arr.x_rank, rings[p], p == 0 ? "A" : "B", search, per_polygon);
     });
   }
-  // Each ring's first point, and how many points the rings of two or more hold.
-  std::array<std::size_t, 2> ring_points{0, 0}, long_rings{0, 0};
-  if (arr.early.found) {
-    for (std::size_t p = 0; p < 2; ++p) {
-      for (const auto& ring : rings[p]) {
-        if (ring.ids.size() < 2) continue;
-        arr.early.ring_start[p].push_back(ring.ids[0]);
-        ring_points[p] += ring.ids.size();
-        ++long_rings[p];
-      }
-    }
-  }
   // Split into cycles, each polygon with its own marks per point.
+  std::array<bool, 2> whole{true, true};  // every ring of two or more points one cycle as it was
   run_tasks(threads_for(total, threads), 2, [&](std::size_t p) {
     PreparedPolygon& out = arr.polygon[p];
     out.type = in[p]->type;
     std::vector<int> where(arr.points.size(), -1);
     for (std::size_t r = 0; r < rings[p].size(); ++r) {
       if (rings[p][r].ids.empty()) continue;
-      detail::split_into_cycles(std::move(rings[p][r]), static_cast<int>(r), where, out);
+      if (!detail::split_into_cycles(std::move(rings[p][r]), static_cast<int>(r), where, out)) whole[p] = false;
     }
   });
-  // Step 3's findings hold when each ring of two or more points is one cycle, whole: as
-  // many cycles, as many points in them (a ring that splits makes more cycles, or drops
-  // points into one-point cycles).
+  // Step 3's findings hold when every ring stayed whole: each cycle is then the ring it
+  // was, and its first point tells step 3 whether step 1 turned it.
   if (arr.early.found) {
-    for (std::size_t p = 0; p < 2; ++p) {
-      std::size_t cycle_points = 0;
-      for (const auto& cycle : arr.polygon[p].cycles) cycle_points += cycle.size();
-      if (arr.polygon[p].cycles.size() != long_rings[p] || cycle_points != ring_points[p]) arr.early = {};
+    if (whole[0] && whole[1]) {
+      for (std::size_t p = 0; p < 2; ++p) {
+        for (const auto& cycle : arr.polygon[p].cycles) arr.early.ring_start[p].push_back(cycle[0]);
+      }
+    } else {
+      arr.early = {};
     }
   }
   return arr;

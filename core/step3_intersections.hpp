@@ -41,6 +41,27 @@ struct PairHash {
     return std::hash<std::uint64_t>()(p.first * 0x9E3779B97F4A7C15ULL ^ p.second);
   }
 };
+
+// One id per crossing point: edges of one polygon that coincide as sets cross the other
+// polygon's edge at the same point, found once per edge (BRIEF.md section 2). Crossings
+// are given in the order they were found; the first of a point takes the next id.
+class CrossingIds {
+ public:
+  // The crossing of edge ia of A and edge jb of B, inserted into both.
+  template <Kernel K>
+  void insert(Arrangement<K>& arr, int ia, int jb, typename K::Vertex&& vertex, std::array<EdgeInsertions, 2>& inserted) {
+    const Edge& a = arr.polygon[0].edges[static_cast<std::size_t>(ia)];
+    const Edge& b = arr.polygon[1].edges[static_cast<std::size_t>(jb)];
+    const auto key = std::make_pair(segment_key(a.src, a.dst), segment_key(b.src, b.dst));
+    const auto [it, fresh] = ids_.try_emplace(key, arr.num_vertices());
+    if (fresh) arr.crossings.push_back(std::move(vertex));
+    inserted[0].add(ia, it->second);
+    inserted[1].add(jb, it->second);
+  }
+
+ private:
+  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, PairHash> ids_;
+};
 }  // namespace detail
 
 // A kernel that rounds crossing points may overflow (inputs near 1e300) or divide by a
@@ -82,20 +103,11 @@ void take_early_intersections(Arrangement<K>& arr, std::array<EdgeInsertions, 2>
       for (int k = 0; k < n; ++k) edge_of[g][static_cast<std::size_t>(first + k)] = first + (turned && k < n - 1 ? n - 2 - k : k);
     }
   }
-  const auto& ea = arr.polygon[0].edges;
-  const auto& eb = arr.polygon[1].edges;
-  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
+  detail::CrossingIds crossing_ids;
   for (auto& part : arr.early.parts) {
     for (auto& c : part.crossings) {
-      const int ia = edge_of[0][static_cast<std::size_t>(c.a)];
-      const int jb = edge_of[1][static_cast<std::size_t>(c.b)];
-      const Edge& a = ea[ia];
-      const Edge& b = eb[jb];
-      const auto key = std::make_pair(segment_key(a.src, a.dst), segment_key(b.src, b.dst));
-      auto [it, fresh] = crossing_id.try_emplace(key, arr.num_vertices());
-      if (fresh) arr.crossings.push_back(std::move(c.vertex));
-      inserted[0].add(ia, it->second);
-      inserted[1].add(jb, it->second);
+      crossing_ids.insert(arr, edge_of[0][static_cast<std::size_t>(c.a)], edge_of[1][static_cast<std::size_t>(c.b)],
+                          std::move(c.vertex), inserted);
     }
     for (int g = 0; g < 2; ++g) {
       for (const auto& [e, v] : part.inserted[g]) inserted[g].add(edge_of[g][static_cast<std::size_t>(e)], v);
@@ -144,33 +156,18 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
         const int jb = j - na;
         const Edge& a = ea[i];
         const Edge& b = eb[jb];
-        if (items[i].lo == items[j].lo && items[i].hi == items[j].hi) return;  // shared_edge
-        const auto rel = relate_segments_by_id<K>(pts, a.src, a.dst, b.src, b.dst);
-        if (rel.proper_crossing) {
-          out.crossings.push_back({i, jb, K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst])});
-          if constexpr (!K::is_exact) check_finite_crossing<K>(arr, out.crossings.back().vertex, a, b);
-          return;
-        }
-        // vertex_on_edge and collinear_overlap: endpoints strictly inside the other edge.
-        if (rel.c_inside_ab) out.inserted[0].add(i, b.src);
-        if (rel.d_inside_ab) out.inserted[0].add(i, b.dst);
-        if (rel.a_inside_cd) out.inserted[1].add(jb, a.src);
-        if (rel.b_inside_cd) out.inserted[1].add(jb, a.dst);
+        relate_edges_across<K>(
+            pts, a.src, a.dst, b.src, b.dst,
+            [&] {
+              out.crossings.push_back({i, jb, K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst])});
+              if constexpr (!K::is_exact) check_finite_crossing<K>(arr, out.crossings.back().vertex, a, b);
+            },
+            [&](int p) { out.inserted[0].add(i, p); }, [&](int p) { out.inserted[1].add(jb, p); });
       });
     });
-    // One id per crossing point: edges of one polygon that coincide as sets cross the other
-    // polygon's edge at the same point, found once per edge (BRIEF.md section 2).
-    std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, detail::PairHash> crossing_id;
+    detail::CrossingIds crossing_ids;
     for (Found& f : found) {
-      for (Crossing& c : f.crossings) {
-        const Edge& a = ea[c.a];
-        const Edge& b = eb[c.b];
-        const auto key = std::make_pair(segment_key(a.src, a.dst), segment_key(b.src, b.dst));
-        auto [it, fresh] = crossing_id.try_emplace(key, arr.num_vertices());
-        if (fresh) arr.crossings.push_back(std::move(c.vertex));
-        inserted[0].add(c.a, it->second);
-        inserted[1].add(c.b, it->second);
-      }
+      for (Crossing& c : f.crossings) crossing_ids.insert(arr, c.a, c.b, std::move(c.vertex), inserted);
       std::vector<Crossing>().swap(f.crossings);
       for (int g = 0; g < 2; ++g) inserted[g].append(std::move(f.inserted[g]));
     }

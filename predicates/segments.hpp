@@ -3,6 +3,7 @@
 // Preconditions: segments have distinct endpoints.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "kernel/kernel.hpp"
@@ -83,6 +84,25 @@ SegmentRelation relate_segments_by_id(const std::vector<typename K::Point>& pts,
     rel = relate_segments<K>(pts[a], pts[b], pts[c], pts[d]);
   }
   return rel;
+}
+
+// An edge a0a1 of A against an edge b0b1 of B (point ids), as step 3 takes them: nothing
+// for the same segment (a shared edge); crossing() for a proper crossing; otherwise on_a(p)
+// for each point p of B strictly inside a0a1 and on_b(p) for each point of A strictly inside
+// b0b1 (vertex on edge, collinear overlap).
+template <Kernel K, class Crossing, class OnA, class OnB>
+void relate_edges_across(const std::vector<typename K::Point>& pts, int a0, int a1, int b0, int b1, Crossing&& crossing,
+                         OnA&& on_a, OnB&& on_b) {
+  if (std::min(a0, a1) == std::min(b0, b1) && std::max(a0, a1) == std::max(b0, b1)) return;
+  const auto rel = relate_segments_by_id<K>(pts, a0, a1, b0, b1);
+  if (rel.proper_crossing) {
+    crossing();
+    return;
+  }
+  if (rel.c_inside_ab) on_a(b0);
+  if (rel.d_inside_ab) on_a(b1);
+  if (rel.a_inside_cd) on_b(a0);
+  if (rel.b_inside_cd) on_b(a1);
 }
 
 }  // namespace mk
