@@ -67,7 +67,7 @@ void run(const mk::bench::Workload& w, mk::Operation op, int repeat, unsigned th
     const std::vector<int> parent = mk::inclusion_parents(res.arrangement, res.cycles);
     const Clock::time_point assembled = Clock::now();
     record("assembly", std::chrono::duration<double, std::milli>(assembled - done).count());
-    const mk::Output out = mk::to_output<K, mk::ExactKernel>(res, false);  // as mk::compute by default
+    const mk::Output out = mk::to_output<K, mk::ExactKernel>(res, false, threads);  // as mk::compute by default
     record("to_output", std::chrono::duration<double, std::milli>(Clock::now() - assembled).count());
     crossings = res.stats.crossings;
     out_vertices = res.stats.vertices_out;

@@ -464,5 +464,48 @@ TEST(EarlyIntersections, SameFragmentsAsStepThreesOwnSearch) {
   std::cout << early << " arrangements with the preparation's intersections, " << searched << " without\n";
 }
 
+// Step 3 gives one id per crossing point even when edges of a polygon that coincide (two
+// squares sharing a side, each with its own copy of it) are crossed more than 1024 times,
+// beside as many crossings of edges that coincide with none, which take their ids without
+// the map (CrossingIds' marks). The expected counts are B's edges that cross the shared
+// side or A's bottom side, counted here; the areas are the oracle's, by inclusion and
+// exclusion: area(A u B) + area(A n B) = area(A) + area(B).
+TEST(CrossingIds, OnePointPerCrossingOfCoincidingEdgesAmongManyCrossings) {
+  const Polygon a{{square_ring(0, 0, 100, 1), square_ring(0, 1, 100, 2)}, PolygonType::island};
+  Ring upper;  // across the shared side y = 1
+  for (int k = 0; k < 1200; ++k) upper.push_back({0.05 + 0.08 * k, k % 2 == 0 ? 0.5 : 1.5});
+  upper.push_back({upper.back().x, 0.25});
+  upper.push_back({0.05, 0.25});
+  Ring lower;  // across A's bottom side y = 0, below the upper ring
+  for (int k = 0; k < 1200; ++k) lower.push_back({0.04 + 0.08 * k, k % 2 == 0 ? -0.2 : 0.2});
+  lower.push_back({lower.back().x, 0.22});
+  lower.push_back({0.04, 0.22});
+  const Polygon b{{upper, lower}, PolygonType::island};
+  const auto crossing = [](const Ring& r, double y) {
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < r.size(); ++k) n += (r[k].y < y) != (r[(k + 1) % r.size()].y < y);
+    return n;
+  };
+  const std::size_t expected = crossing(upper, 1) + crossing(lower, 0);
+  ASSERT_GT(crossing(upper, 1), 1024u);
+  ASSERT_GT(crossing(lower, 0), 1024u);
+  const Q sum = area(to_qrings(a)) + area(to_qrings(b));
+  for (const unsigned threads : {1u, 2u}) {
+    Options options;
+    options.threads = threads;
+    options.op = Operation::union_;
+    const BooleanResult<K> exact = boolean_op<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b), options);
+    EXPECT_EQ(exact.stats.crossings, expected) << threads << " threads";
+    const BooleanResult<RationalKernel> u =
+        boolean_op<RationalKernel>(to_kernel_polygon<RationalKernel>(a), to_kernel_polygon<RationalKernel>(b), options);
+    options.op = Operation::intersection;
+    const BooleanResult<RationalKernel> i =
+        boolean_op<RationalKernel>(to_kernel_polygon<RationalKernel>(a), to_kernel_polygon<RationalKernel>(b), options);
+    EXPECT_EQ(u.stats.crossings, expected);
+    EXPECT_EQ(i.stats.crossings, expected);
+    EXPECT_EQ(area(result_rings(u)) + area(result_rings(i)), sum);
+  }
+}
+
 }  // namespace
 }  // namespace mk::test
