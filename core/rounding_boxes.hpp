@@ -235,7 +235,11 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
         return true;
       }
     }
-    const int pieces = std::max(std::abs(grid.col(u.x) - grid.col(w.x)), std::abs(grid.row(u.y) - grid.row(w.y))) + 1;
+    // As many pieces as the edge crosses cells along its shorter axis: a piece's box then
+    // spans about two cells across, so it visits about twice the cells the edge passes,
+    // while each piece's box costs more than visiting a cell (a long edge along a row is
+    // one or two pieces, not one per column).
+    const int pieces = std::min(std::abs(grid.col(u.x) - grid.col(w.x)), std::abs(grid.row(u.y) - grid.row(w.y))) + 1;
     const double dx = w.x - u.x, dy = w.y - u.y;
     Point p = u;
     int pc0 = 1, pc1 = 0, pr0 = 1, pr1 = 0;  // the previous piece's cells
@@ -366,6 +370,7 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
       const bool ok = for_each_cell(e, [&](std::size_t cell) {
         const int s = start[2 * cell], end = start[2 * cell + lists];
         work += 1 + static_cast<std::size_t>(end - s);
+        if (s == end) return work <= part_budget;  // an empty cell (most of a long edge's)
         // clear_of_edge's first four tests with the cell's largest half-sizes: each side is
         // monotone in the half-size, so passing here passes there, and most vertices of
         // the cell are passed over without the rest of the test (the same verdicts).

@@ -319,6 +319,50 @@ TEST(RoundingBoxes, LargeLatticesTheSameVerdictOnAnyNumberOfThreads) {
   EXPECT_GE(last_column, 8);
 }
 
+// Long, shallow edges (each crossing a row of many cells, cut into a few long pieces, see
+// boxes_keep_topology) with moved vertices at chosen distances from their middles, above a
+// lattice of small squares that fills the grid: the grid's verdict is every pair's.
+TEST(RoundingBoxes, LongShallowEdgesAgreeWithAllPairs) {
+  std::mt19937_64 rng(test_seed(97));
+  std::uniform_real_distribution<double> u(0, 1);
+  int certified = 0, refused = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::vector<RoundedVertexBox> boxes;
+    std::vector<std::array<int, 2>> edges;
+    for (int i = 0; i < 40; ++i) {
+      for (int j = 0; j < 10; ++j) {
+        const int first = static_cast<int>(boxes.size());
+        const double x = 25 * i, y = 20 + 8 * j;
+        for (const Point p : {Point{x, y}, Point{x + 3, y}, Point{x + 3, y + 3}, Point{x, y + 3}}) boxes.push_back({p, 0x1p-30, 0x1p-30});
+        for (int k = 0; k < 4; ++k) edges.push_back({first + k, first + (k + 1) % 4});
+      }
+    }
+    for (int e = 0; e < 6; ++e) {
+      // An edge from x = 0 to x = 1000 rising by up to 25 (a few rows of cells) in its band
+      // of y below the lattice, its ends not moved.
+      const double y0 = -200 + 30 * e, rise = 25 * u(rng);
+      const int a = static_cast<int>(boxes.size());
+      boxes.push_back({{0, y0}, 0, 0});
+      boxes.push_back({{1000, y0 + rise}, 0, 0});
+      edges.push_back({a, a + 1});
+      // A short moved edge whose first end lies at distance d from the long edge's line near
+      // a point t along it, with a box of half-size h: met when d is within about h.
+      const double t = u(rng), h = std::ldexp(1.0, -20 - static_cast<int>(rng() % 6));
+      const double d = h * (rng() % 3 == 0 ? 0.5 : 1.5) * (rng() % 2 == 0 ? 1 : -1);
+      const Point p{1000 * t, y0 + rise * t + d};
+      const int c = static_cast<int>(boxes.size());
+      boxes.push_back({p, h, h});
+      boxes.push_back({{p.x + 0.5, p.y + (d > 0 ? 0.5 : -0.5)}, h, h});
+      edges.push_back({c, c + 1});
+    }
+    const bool grid = detail::boxes_keep_topology(boxes, edges, false, 1 + trial % 2);
+    ASSERT_EQ(grid, detail::boxes_keep_topology(boxes, edges, true)) << "trial " << trial;
+    (grid ? certified : refused) += 1;
+  }
+  EXPECT_GT(certified, 0);
+  EXPECT_GT(refused, 0);
+}
+
 // The exact certificate of few crossings (rounding_motion.hpp) over a result of many input
 // points whose crossings lie on opposite sides of it: a ring of 3000 points, and two thin
 // triangles outside it, each with an edge along the ring's tangent at a ring point p and a
