@@ -79,6 +79,25 @@ class BlockedOrder {
     }
   }
 
+  // The last element x with less(x, key) and the first without, each -1 when there is none.
+  template <class Key, class Less>
+  std::pair<int, int> around(const Key& key, Less&& less) {
+    const auto [b, i] = find(key, less);
+    int before = -1, after = -1;
+    if (b < blocks_.size()) {
+      finger_ = {b, i};
+      after = i < blocks_[b].size() ? blocks_[b][i] : (b + 1 < blocks_.size() ? blocks_[b + 1].front() : -1);
+      if (i > 0) {
+        before = blocks_[b][i - 1];
+      } else if (b > 0) {
+        before = blocks_[b - 1].back();
+      }
+    } else if (!blocks_.empty()) {
+      before = blocks_.back().back();
+    }
+    return {before, after};
+  }
+
   // The first element x with !less(x, key), or -1.
   template <class Key, class Less>
   int lower_bound(const Key& key, Less&& less) {
@@ -130,6 +149,28 @@ class BlockedOrder {
   std::vector<std::vector<int>> blocks_;
   Place finger_{0, 0};
 };
+
+// Whether edge a (ends la < ha, point ids) lies below edge b (lb < hb) on a sweep line
+// through points in lexicographic order that both cross, neither crossing the other: by the
+// orientation of the later-starting edge's start against the other edge, or of their ends
+// when they start together. Coinciding edges (or inconsistent inexact predicates) are
+// ordered by `a_first`.
+template <Kernel K>
+bool edge_is_below(const std::vector<typename K::Point>& p, int la, int ha, int lb, int hb, bool a_first) {
+  Sign s = Sign::zero;
+  if (la == lb) {
+    s = K::orient2d(p[la], p[ha], p[hb]);  // positive: b leaves the shared end above a
+  } else if (la < lb) {
+    s = K::orient2d(p[la], p[ha], p[lb]);  // b starts above a, or below it
+    if (s == Sign::zero) s = K::orient2d(p[la], p[ha], p[hb]);
+  } else {
+    s = K::orient2d(p[lb], p[hb], p[la]);
+    if (s == Sign::zero) s = K::orient2d(p[lb], p[hb], p[ha]);
+    s = s == Sign::positive ? Sign::negative : (s == Sign::negative ? Sign::positive : Sign::zero);
+  }
+  if (s == Sign::zero) return a_first;
+  return s == Sign::positive;
+}
 
 }  // namespace detail
 
@@ -272,22 +313,7 @@ class WindingLocator {
   }
 
   bool is_below(int a, int b) const {
-    if (a == b) return false;
-    const auto& p = arr_.points;
-    const int la = lo(a), lb = lo(b), ha = hi(a), hb = hi(b);
-    Sign s = Sign::zero;
-    if (la == lb) {
-      s = K::orient2d(p[la], p[ha], p[hb]);  // positive: b leaves the shared end above a
-    } else if (la < lb) {
-      s = K::orient2d(p[la], p[ha], p[lb]);  // b starts above a, or below it
-      if (s == Sign::zero) s = K::orient2d(p[la], p[ha], p[hb]);
-    } else {
-      s = K::orient2d(p[lb], p[hb], p[la]);
-      if (s == Sign::zero) s = K::orient2d(p[lb], p[hb], p[ha]);
-      s = s == Sign::positive ? Sign::negative : (s == Sign::negative ? Sign::positive : Sign::zero);
-    }
-    if (s == Sign::zero) return a < b;  // coinciding edges (or inconsistent inexact predicates)
-    return s == Sign::positive;
+    return a != b && detail::edge_is_below<K>(arr_.points, lo(a), hi(a), lo(b), hi(b), a < b);
   }
 
   // One sweep over the points in lexicographic order. Each edge, when it enters the line,

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/arrangement.hpp"
+#include "core/clean_edges.hpp"
 #include "core/edge_insertions.hpp"
 #include "core/error.hpp"
 #include "core/pairs.hpp"
@@ -239,7 +240,23 @@ void make_both_vertex_complete(Arrangement<K>& arr, std::array<std::vector<IdRin
     }
   });
   const std::span<const SweepItem> items(item_array.get(), static_cast<std::size_t>(na + num_items[1]));
-  CandidatePairs<K> pairs(pts, arr.x_rank, items, false, search, threads);
+  // Pairs of one polygon's edges are left out when a sweep finds that its edges meet only at
+  // shared ends (nothing to insert, nothing crossing), tried when their boxes would make
+  // many pairs (a star's spikes: millions, against a sweep's n log n).
+  bool bipartite = false;
+  if constexpr (std::is_same_v<typename K::Point, Point>) {
+    const std::array<std::span<const SweepItem>, 2> own{items.subspan(0, static_cast<std::size_t>(na)), items.subspan(static_cast<std::size_t>(na))};
+    constexpr double kSweepFrom = 32;  // box pairs per edge
+    const auto many = [&](int g) {
+      return own[g].size() >= 64 && estimated_box_pairs<K>(pts, own[g]) > kSweepFrom * static_cast<double>(own[g].size());
+    };
+    if (search == PairSearch::sweep && many(0) && many(1)) {
+      std::array<bool, 2> clean{false, false};
+      run_tasks(threads_for(items.size(), threads), 2, [&](std::size_t g) { clean[g] = edges_meet_only_at_ends<K>(pts, own[g]); });
+      bipartite = clean[0] && clean[1];
+    }
+  }
+  CandidatePairs<K> pairs(pts, arr.x_rank, items, bipartite, search, threads);
   struct Found {
     std::array<EdgeInsertions, 2> inserted;
     std::array<std::pair<int, int>, 2> crossing{{{-1, -1}, {-1, -1}}};

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <numbers>
 #include <set>
@@ -16,6 +17,7 @@
 #include "arithmetic/kernels/rational_kernel.hpp"
 #include "core/assemble.hpp"
 #include "core/boolean_op.hpp"
+#include "core/clean_edges.hpp"
 #include "core/locator.hpp"
 #include "core/pairs.hpp"
 #include "core/prepare.hpp"
@@ -462,6 +464,135 @@ TEST(EarlyIntersections, SameFragmentsAsStepThreesOwnSearch) {
   EXPECT_GT(early, 0);
   EXPECT_GT(searched, 0);
   std::cout << early << " arrangements with the preparation's intersections, " << searched << " without\n";
+}
+
+// The sweep that finds a polygon's edges meeting only at shared ends (core/clean_edges.hpp)
+// against every pair (or, for large polygons, every candidate pair): the same verdict on
+// segment soups, random polygons, the large inputs, and stars of integer points each with a
+// second ring placed at a point of one of its edges (shared end, point on an edge, a
+// crossing or an overlap, whatever it makes).
+TEST(CleanEdges, SweepVerdictIsEveryPairs) {
+  std::mt19937_64 rng(47);
+  std::vector<Polygon> polygons = segment_soups(rng);
+  for (int k = 0; k < 60; ++k) polygons.push_back(random_polygon(rng, false));
+  for (const auto& [name, ab] : large_inputs()) {
+    polygons.push_back(ab.first);
+    polygons.push_back(ab.second);
+  }
+  for (int k = 0; k < 80; ++k) {
+    Ring star = test::random_star(rng, 0, 0, 2, 30 + k, 40 + 4 * k);
+    polygons.push_back(Polygon{{star}, PolygonType::island});
+    const std::size_t e = rng() % star.size();
+    const Point& p = star[e];
+    const Point& q = star[(e + 1) % star.size()];
+    const Point at = k % 3 == 0 ? p : Point{(p.x + q.x) / 2, (p.y + q.y) / 2};  // exact: integers
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    Ring other;
+    switch (k % 4) {
+      case 0: other = {at, {at.x - dy, at.y + dx}, {at.x - dy - dx, at.y + dx - dy}}; break;  // outward
+      case 1: other = {at, {at.x + dy, at.y - dx}, {at.x + dy + dx, at.y - dx + dy}}; break;  // inward
+      case 2: other = {at, {at.x + dx, at.y + dy}, {at.x + dx - dy, at.y + dy + dx}}; break;   // along the edge
+      default: other = {{at.x + 0.25, at.y}, {at.x + 0.25, at.y + 100}, {at.x + 0.5, at.y + 100}}; break;
+    }
+    polygons.push_back(Polygon{{star, other}, PolygonType::island});
+  }
+  // Two edges that cross after the ring between them has ended: neighbours only then.
+  polygons.push_back(Polygon{{{{0, 1}, {3, 1.1}, {3, 0.9}}, {{1, 0.5}, {10, 2}, {10, -3}}, {{2, 1.8}, {9, 0.3}, {2, 3}}},
+                             PolygonType::island});
+  int clean = 0, not_clean = 0;
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const Items s = items_of(polygons[i], Polygon{});
+    const auto meet = [&](int a, int b) {
+      const SweepItem& x = s.items[static_cast<std::size_t>(a)];
+      const SweepItem& y = s.items[static_cast<std::size_t>(b)];
+      if (x.lo == y.lo && x.hi == y.hi) return true;
+      const SegmentRelation rel = relate_segments_by_id<K>(s.pts, x.lo, x.hi, y.lo, y.hi);
+      return rel.proper_crossing || rel.touches();
+    };
+    bool expected = true;
+    if (s.items.size() <= 3000) {
+      for (std::size_t a = 0; a < s.items.size() && expected; ++a) {
+        for (std::size_t b = a + 1; b < s.items.size() && expected; ++b) expected = !meet(static_cast<int>(a), static_cast<int>(b));
+      }
+    } else {
+      for_each_candidate_pair<K>(s.pts, s.x_rank, s.items, false, PairSearch::sweep, [&](int a, int b) {
+        if (meet(a, b)) expected = false;
+      });
+    }
+    ASSERT_EQ(edges_meet_only_at_ends<K>(s.pts, s.items), expected) << "polygon " << i << ": " << describe(polygons[i]);
+    (expected ? clean : not_clean) += 1;
+  }
+  EXPECT_GT(clean, 60);
+  EXPECT_GT(not_clean, 60);
+  std::cout << clean << " polygons whose edges meet only at shared ends, " << not_clean << " others\n";
+}
+
+// Spiky stars, whose own pairs of edges the preparation leaves to the sweep (checked here:
+// many box pairs, edges meeting only at shared ends): the crossings it finds between A and
+// B make the same fragments as step 3's own search over the vertex-complete edges, and a
+// star made to cross itself is refused with the rational kernel's message (that kernel
+// searches every pair of edges).
+TEST(CleanEdges, SpikyStarsTheSameFragmentsAndErrorsAsEveryPairSearched) {
+  std::mt19937_64 rng(53);
+  const Polygon a{{test::random_star(rng, 0, 0, 2, 1000, 2000)}, PolygonType::island};
+  const Polygon b{{test::random_star(rng, 300, 100, 2, 1000, 2000)}, PolygonType::island};
+  for (const Polygon* p : {&a, &b}) {
+    const Items s = items_of(*p, Polygon{});
+    ASSERT_GT(estimated_box_pairs<K>(s.pts, s.items), 32.0 * static_cast<double>(s.items.size()));
+    ASSERT_TRUE(edges_meet_only_at_ends<K>(s.pts, s.items));
+  }
+  // A vertex by what defines it exactly: an input point, or the crossing of two segments
+  // (each with its ends in order, A's first), which is cheaper to compare than its rational
+  // coordinates.
+  const auto name = [](const ExactVertex& v) {
+    char text[256];
+    const auto ordered = [](Point p, Point q) { return p.x < q.x || (p.x == q.x && p.y < q.y) ? std::pair(p, q) : std::pair(q, p); };
+    if (!v.is_crossing) {
+      std::snprintf(text, sizeof text, "%a %a", v.a0.x, v.a0.y);
+    } else {
+      const auto [a0, a1] = ordered(v.a0, v.a1);
+      const auto [b0, b1] = ordered(v.b0, v.b1);
+      std::snprintf(text, sizeof text, "%a %a %a %a x %a %a %a %a", a0.x, a0.y, a1.x, a1.y, b0.x, b0.y, b1.x, b1.y);
+    }
+    return std::string(text);
+  };
+  const auto fragments = [&](const Arrangement<K>& arr, int g) {
+    std::vector<std::string> out;
+    for (const Fragment& f : arr.polygon[g].fragments) {
+      out.push_back(std::to_string(f.edge) + ": " + name(arr.vertex(f.from)) + " -> " + name(arr.vertex(f.to)));
+    }
+    return out;
+  };
+  for (const unsigned threads : {1u, 2u}) {
+    Arrangement<K> with = prepare<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(b), PairSearch::sweep, threads);
+    ASSERT_TRUE(with.early.found);
+    Arrangement<K> without = with;
+    without.early = {};
+    for (Arrangement<K>* arr : {&with, &without}) {
+      normalize_orientations(*arr, Operation::intersection, threads);
+      build_vertex_rings(*arr);
+      insert_intersections(*arr, PairSearch::sweep, threads);
+    }
+    EXPECT_EQ(with.num_crossings(), without.num_crossings());
+    EXPECT_GT(with.num_crossings(), 10000);
+    for (int g = 0; g < 2; ++g) EXPECT_EQ(fragments(with, g), fragments(without, g)) << "polygon " << g;
+  }
+  Polygon crossed = a;  // two far vertices swapped: edges that cross
+  auto& r = crossed.rings[0];
+  std::swap(r[3], r[r.size() / 2]);
+  std::string exact_error, rational_error;
+  try {
+    boolean_op<K>(to_kernel_polygon<K>(crossed), to_kernel_polygon<K>(b), Options{});
+  } catch (const CrossingEdges& e) {
+    exact_error = e.what();
+  }
+  try {
+    boolean_op<RationalKernel>(to_kernel_polygon<RationalKernel>(crossed), to_kernel_polygon<RationalKernel>(b), Options{});
+  } catch (const CrossingEdges& e) {
+    rational_error = e.what();
+  }
+  EXPECT_FALSE(exact_error.empty());
+  EXPECT_EQ(exact_error, rational_error);
 }
 
 // Step 3 gives one id per crossing point even when edges of a polygon that coincide (two
