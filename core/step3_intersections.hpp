@@ -53,7 +53,6 @@ struct PairHash {
 // directly, the same ids as through the map (star 1e4: 247k crossings, 250k map nodes).
 class CrossingIds {
  public:
-  CrossingIds() = default;
   template <Kernel K>
   CrossingIds(const Arrangement<K>& arr, std::size_t expected) {
     constexpr std::size_t kMarkFrom = 1024;  // fewer crossings: the map is cheaper than the marks
