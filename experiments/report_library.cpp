@@ -89,7 +89,7 @@ std::vector<std::string> backend_order(const std::vector<ResultRow>& rows) {
   return out;
 }
 
-struct Tally {
+struct LibraryTally {
   std::map<Outcome, std::size_t> outcomes;
   std::size_t runs = 0, failed_runs = 0;
   std::set<std::uint64_t> cases, failed_cases;
@@ -115,7 +115,7 @@ void header(std::ostringstream& md, const std::string& first, const std::vector<
 
 
 void comparison_table(std::ostringstream& md, const std::vector<std::string>& backends,
-                      const std::map<std::string, Tally>& tallies) {
+                      const std::map<std::string, LibraryTally>& tallies) {
   std::vector<std::string> cols{"runs"};
   for (const Outcome o : all_outcomes) cols.emplace_back(outcome_name(o));
   cols.insert(cols.end(), {"failed runs", "cases", "failed cases"});
@@ -123,7 +123,7 @@ void comparison_table(std::ostringstream& md, const std::vector<std::string>& ba
   for (const auto& b : backends) {
     const auto it = tallies.find(b);
     if (it == tallies.end()) continue;
-    const Tally& t = it->second;
+    const LibraryTally& t = it->second;
     md << "| " << b << (is_peer(b) ? "" : " (mkbool)") << " | " << t.runs << " |";
     for (const Outcome o : all_outcomes) {
       const auto c = t.outcomes.find(o);
@@ -149,7 +149,7 @@ std::string library_report(const std::vector<ResultRow>& rows) {
   for (const auto& r : rows) {
     if (r.kernel != "reference") by_run[{r.case_index, r.op, r.regular}][r.kernel] = &r;
   }
-  std::map<std::string, Tally> common;
+  std::map<std::string, LibraryTally> common;
   std::size_t common_runs = 0;
   for (const auto& [key, m] : by_run) {
     if (m.size() != backends.size()) continue;
@@ -173,7 +173,7 @@ std::string library_report(const std::vector<ResultRow>& rows) {
         "A case fails when any of its runs fails (runs of one case are correlated).\n\n";
   md << "### Runs that every back end ran (" << common_runs << " runs)\n\n";
   comparison_table(md, backends, common);
-  std::map<std::string, Tally> all;
+  std::map<std::string, LibraryTally> all;
   for (const auto& r : rows) {
     if (r.kernel != "reference") all[r.kernel].add(r);
   }
@@ -228,7 +228,7 @@ std::string library_report(const std::vector<ResultRow>& rows) {
 
   // Failure maps: generator x back end.
   std::vector<std::string> generators;
-  std::map<std::string, std::map<std::string, Tally>> by_generator;
+  std::map<std::string, std::map<std::string, LibraryTally>> by_generator;
   for (const auto& r : rows) {
     if (r.kernel == "reference") continue;
     if (std::find(generators.begin(), generators.end(), r.generator) == generators.end()) generators.push_back(r.generator);
@@ -248,7 +248,7 @@ std::string library_report(const std::vector<ResultRow>& rows) {
           md << " |";
           continue;
         }
-        const Tally& t = it->second;
+        const LibraryTally& t = it->second;
         md << " " << (per_case ? rate_with_interval(t.failed_cases.size(), t.cases.size()) : rate_with_interval(t.failed_runs, t.runs))
            << " |";
       }

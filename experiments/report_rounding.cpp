@@ -13,7 +13,7 @@ namespace mk::experiments {
 
 namespace {
 
-struct Tally {
+struct RoundingTally {
   std::size_t runs = 0, nearest_invalid = 0, snapped = 0, certified_invalid = 0, geos_checked = 0, geos_invalid = 0;
   double worst_displacement = 0;
   void add(const ResultRow& r) {
@@ -27,19 +27,19 @@ struct Tally {
   }
 };
 
-std::string displacement_cell(const Tally& t) {
+std::string displacement_cell(const RoundingTally& t) {
   if (t.snapped == 0) return "-";
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f", t.worst_displacement);
   return buf;
 }
 
-std::string geos_cell(const Tally& t) {
+std::string geos_cell(const RoundingTally& t) {
   if (t.geos_checked == 0) return "-";
   return std::to_string(t.geos_invalid) + " of " + std::to_string(t.geos_checked);
 }
 
-void table(std::ostringstream& md, const std::string& label, const std::map<std::string, Tally>& by) {
+void table(std::ostringstream& md, const std::string& label, const std::map<std::string, RoundingTally>& by) {
   md << "| " << label
      << " | runs | nearest invalid | certified: snapped | certified: invalid | certified: GEOS invalid | largest move "
         "(grid units) |\n"
@@ -54,7 +54,7 @@ void table(std::ostringstream& md, const std::string& label, const std::map<std:
 }  // namespace
 
 std::string rounding_report(const std::vector<ResultRow>& rows, const std::vector<Artefact>& artefacts) {
-  std::map<std::string, Tally> by_kernel, by_generator;
+  std::map<std::string, RoundingTally> by_kernel, by_generator;
   for (const auto& r : rows) {
     if (!r.nearest_valid || !r.certified_valid) continue;
     by_kernel[r.kernel].add(r);

@@ -20,7 +20,7 @@ namespace mk::experiments {
 
 namespace {
 
-struct Tally {
+struct SetTally {
   std::size_t runs = 0, correct = 0, valid_different = 0, invalid = 0, failed = 0;
   std::vector<double> ms;  // op time of the runs that gave a result
 };
@@ -38,7 +38,7 @@ std::string ms_cell(double v) {
 std::string fill_and_set_report(const std::vector<ResultRow>& rows) {
   // Generators in order of appearance, kernels in the library's order.
   std::vector<std::string> generators_seen;
-  std::map<std::tuple<std::string, std::string, bool>, Tally> tally;  // generator, kernel, regular
+  std::map<std::tuple<std::string, std::string, bool>, SetTally> tally;  // generator, kernel, regular
   std::set<std::string> kernels_seen;
   std::size_t reference_failures = 0;
   for (const auto& r : rows) {
@@ -51,7 +51,7 @@ std::string fill_and_set_report(const std::vector<ResultRow>& rows) {
       generators_seen.push_back(r.generator);
     }
     kernels_seen.insert(r.kernel);
-    Tally& t = tally[{r.generator, r.kernel, r.regular}];
+    SetTally& t = tally[{r.generator, r.kernel, r.regular}];
     ++t.runs;
     switch (r.verdict) {
       case Verdict::exact_match: ++t.correct; break;
@@ -88,7 +88,7 @@ std::string fill_and_set_report(const std::vector<ResultRow>& rows) {
       for (const bool regular : {true, false}) {
         const auto it = tally.find({g, k, regular});
         if (it == tally.end()) continue;
-        const Tally& t = it->second;
+        const SetTally& t = it->second;
         double total_ms = 0;
         for (const double v : t.ms) total_ms += v;
         md << "| " << g << " | " << k << " | " << (regular ? "yes" : "no") << " | " << t.runs << " | " << t.correct

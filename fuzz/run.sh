@@ -35,11 +35,13 @@ declare -A sources=(
   [fuzz_geojson]="io/geojson_reader.cpp io/geojson_writer.cpp io/format.cpp io/wkt_reader.cpp io/native_json.cpp io/parts.cpp io/ring_rules.cpp"
   [fuzz_native_json]="io/native_json.cpp io/ring_rules.cpp"
   [fuzz_wkb]="io/wkb_reader.cpp io/wkb_writer.cpp io/ring_rules.cpp"
-  [fuzz_operation]="api/mkbool.cpp api/fill.cpp io/wkt_writer.cpp io/geojson_writer.cpp io/native_json.cpp io/svg.cpp io/ring_rules.cpp"
+  [fuzz_operation]="$work/api_unity.cpp io/wkt_writer.cpp io/geojson_writer.cpp io/native_json.cpp io/svg.cpp io/ring_rules.cpp"
 )
 read -r -a targets <<< "${MK_FUZZ_TARGETS:-fuzz_wkt fuzz_geojson fuzz_native_json fuzz_wkb fuzz_operation}"
 
-object() { echo "$work/obj/${1//\//_}.o"; }
+object() { local u="${1#"$work"/}"; echo "$work/obj/${u//\//_}.o"; }
+# A unit's source: a path under the repository, or an absolute one (a unit made here).
+source_of() { if [[ "$1" == /* ]]; then echo "$1"; else echo "$root/$1"; fi; }
 
 # Runs "$@" for each line of standard input as its last argument, at most $jobs at a time;
 # fails when any run failed.
@@ -60,7 +62,11 @@ parallel_each() {
   return "$status"
 }
 
-compile_unit() { "$cxx" "${cflags[@]}" -c "$root/$1" -o "$(object "$1")"; }
+compile_unit() { "$cxx" "${cflags[@]}" -c "$(source_of "$1")" -o "$(object "$1")"; }
+
+# The library's two files as one unit: they instantiate most of the same templates, and
+# apart they took most of this script's compilation time.
+printf '#include "api/mkbool.cpp"\n#include "api/fill.cpp"\n' > "$work/api_unity.cpp"
 
 echo "== building ${targets[*]}"
 mkdir -p "$work/obj"
@@ -69,7 +75,9 @@ for target in "${targets[@]}"; do
   units+=("fuzz/$target.cpp")
   for s in ${sources[$target]}; do units+=("$s"); done
 done
-printf '%s\n' "${units[@]}" | sort -u | while read -r u; do echo "$(stat -c %s "$root/$u") $u"; done \
+# Largest first (by size; the made unit, the largest by far, before all).
+unit_size() { if [[ "$1" == /* ]]; then echo 999999999; else stat -c %s "$root/$1"; fi; }
+printf '%s\n' "${units[@]}" | sort -u | while read -r u; do echo "$(unit_size "$u") $u"; done \
   | sort -rn | cut -d' ' -f2 | parallel_each compile_unit
 for target in "${targets[@]}"; do
   objects=("$(object "fuzz/$target.cpp")")

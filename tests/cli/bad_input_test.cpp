@@ -13,7 +13,6 @@
 namespace mk::test {
 namespace {
 
-const std::string square_b = "POLYGON((1 1,3 1,3 3,1 3,1 1))";
 
 // Exit 3, nothing on standard output, one error line containing every fragment.
 void expect_invalid(const std::vector<std::string>& args, std::initializer_list<std::string> fragments,

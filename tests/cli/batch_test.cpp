@@ -22,8 +22,6 @@ std::string case_line(const Json& id, const std::string& op, const std::string& 
   return Json{{"id", id}, {"op", op}, {"a_wkt", a}, {"b_wkt", b}}.dump() + "\n";
 }
 
-const std::string square_a = "POLYGON((0 0,2 0,2 2,0 2,0 0))";
-const std::string square_b = "POLYGON((1 1,3 1,3 3,1 3,1 1))";
 
 std::vector<Json> parse_lines(const std::string& text) {
   std::vector<Json> lines;

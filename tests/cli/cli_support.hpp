@@ -15,6 +15,10 @@
 
 namespace mk::test {
 
+// Two overlapping squares, the command tests' usual input.
+inline const std::string square_a = "POLYGON((0 0,2 0,2 2,0 2,0 0))";
+inline const std::string square_b = "POLYGON((1 1,3 1,3 3,1 3,1 1))";
+
 inline const std::string& mkbool_exe() {
   static const std::string exe = MK_CLI_EXE;
   return exe;

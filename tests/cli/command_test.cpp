@@ -14,8 +14,6 @@
 namespace mk::test {
 namespace {
 
-const std::string square_a = "POLYGON((0 0,2 0,2 2,0 2,0 0))";
-const std::string square_b = "POLYGON((1 1,3 1,3 3,1 3,1 1))";
 
 TEST(cliCommand, EveryOperation) {
   const std::pair<const char*, const char*> cases[] = {

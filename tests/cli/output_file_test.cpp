@@ -23,8 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string square_a = "POLYGON((0 0,2 0,2 2,0 2,0 0))";
-const std::string square_b = "POLYGON((1 1,3 1,3 3,1 3,1 1))";
 const std::string result = "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))\n";
 const std::string one_case =
     R"x({"id":1,"op":"union","a_wkt":"POLYGON((0 0,1 0,0 1,0 0))","b_wkt":"POLYGON EMPTY"})x"

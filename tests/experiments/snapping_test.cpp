@@ -28,7 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path snapping_dir(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / ("mkbool_snapping_test_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(d);
   fs::create_directories(d);
@@ -79,7 +79,7 @@ TEST(Snapping, WrittenOutputIsValidForGeosAndSnappedResultsArePictured) {
     EXPECT_EQ(geos_checked, bounded);
   }
 
-  const fs::path dir = fresh_dir("pictures");
+  const fs::path dir = snapping_dir("pictures");
   const std::vector<Artefact> arts = write_artefacts(rows, dir.string(), {});
   std::size_t expected = 0;
   for (const auto& [generator, cases] : snapped_cases) expected += std::min<std::size_t>(3, cases.size());
@@ -145,7 +145,7 @@ TEST(Snapping, ArtefactKindsRoundTripAndUnknownKindsAreRefused) {
     EXPECT_EQ(parse_artefact_kind(artefact_kind_name(k)), std::optional<Artefact::Kind>(k));
   }
   EXPECT_FALSE(parse_artefact_kind("pictures"));
-  const fs::path dir = fresh_dir("kinds");
+  const fs::path dir = snapping_dir("kinds");
   ResultRow r;
   r.generator = "ulp_perturbed";
   r.kernel = "exact";
