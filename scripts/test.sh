@@ -38,6 +38,6 @@ ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 
 if [ -x fuzz/run.sh ] || [ -f fuzz/run.sh ]; then
   section "Fuzzing the parsers and the whole operation"
-  bash fuzz/run.sh 25
+  bash fuzz/run.sh 20
 fi
 section "all tests passed"
