@@ -13,7 +13,6 @@
 namespace mk::test {
 namespace {
 
-
 // Exit 3, nothing on standard output, one error line containing every fragment.
 void expect_invalid(const std::vector<std::string>& args, std::initializer_list<std::string> fragments,
                     const std::string& input = {}) {

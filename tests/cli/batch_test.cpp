@@ -22,7 +22,6 @@ std::string case_line(const Json& id, const std::string& op, const std::string& 
   return Json{{"id", id}, {"op", op}, {"a_wkt", a}, {"b_wkt", b}}.dump() + "\n";
 }
 
-
 std::vector<Json> parse_lines(const std::string& text) {
   std::vector<Json> lines;
   std::istringstream in(text);

@@ -14,7 +14,6 @@
 namespace mk::test {
 namespace {
 
-
 TEST(cliCommand, EveryOperation) {
   const std::pair<const char*, const char*> cases[] = {
       {"intersection", "POLYGON ((2 1, 2 2, 1 2, 1 1, 2 1))\n"},

@@ -15,13 +15,12 @@ namespace mk::test {
 namespace {
 
 const std::string kBowtie = "POLYGON((0 0,2 2,2 0,0 2,0 0))";
-const std::string kSquare = "POLYGON((0 0,2 0,2 2,0 2,0 0))";
 
 TEST(cliFill, SelfCrossingInputIsRefusedWithoutAFillRuleAndReadWithOne) {
-  const ProcessResult refused = run_mkbool({"union", kBowtie, kSquare});
+  const ProcessResult refused = run_mkbool({"union", kBowtie, square_a});
   EXPECT_EQ(refused.exit_code, 3) << describe(refused);
   EXPECT_NE(refused.err.find("crosses"), std::string::npos) << describe(refused);
-  const ProcessResult read = run_mkbool({"union", kBowtie, kSquare, "--fill-rule", "evenodd", "--stats"});
+  const ProcessResult read = run_mkbool({"union", kBowtie, square_a, "--fill-rule", "evenodd", "--stats"});
   ASSERT_EQ(read.exit_code, 0) << describe(read);
   // The square covers the bowtie: evenodd gives the square, area 4.
   EXPECT_NE(read.err.find("\"area_exact\":\"4\""), std::string::npos) << describe(read);
@@ -121,10 +120,10 @@ TEST(cliFill, BatchLinesRunThePartsForms) {
       {{"id", 2}, {"op", "intersection-all"}, {"parts", {"POLYGON((0 0,2 0,2 2,0 2,0 0))", "POLYGON((1 1,3 1,3 3,1 3,1 1))"}}},
       {{"id", 3}, {"op", "make-valid"}, {"wkt", kBowtie}, {"fill_rule", "nonzero"}},
       {{"id", 4}, {"op", "union-all"}, {"geojson", {{"type", "FeatureCollection"}, {"features", {{{"type", "Feature"}, {"properties", Json::object()}, {"geometry", square}}}}}}},
-      {{"id", 5}, {"op", "union-all"}, {"a_wkt", kSquare}, {"b_wkt", kSquare}},
-      {{"id", 6}, {"op", "union-all"}, {"parts", {kSquare, 3}}},
+      {{"id", 5}, {"op", "union-all"}, {"a_wkt", square_a}, {"b_wkt", square_a}},
+      {{"id", 6}, {"op", "union-all"}, {"parts", {square_a, 3}}},
       {{"id", 7}, {"op", "intersection-all"}, {"parts", Json::array()}},
-      {{"id", 8}, {"op", "union-all"}, {"wkt", kSquare}, {"geojson", square}},
+      {{"id", 8}, {"op", "union-all"}, {"wkt", square_a}, {"geojson", square}},
       {{"id", 9}, {"op", "union"}, {"wkt", squares}},
       {{"id", 10}, {"op", "union-all"}, {"wkt", "POLYGON((0 0,1 0,1 1))"}}};
   std::string input;
