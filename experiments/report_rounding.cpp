@@ -67,8 +67,9 @@ std::string rounding_report(const std::vector<ResultRow>& rows, const std::vecto
         "double (`--rounding nearest`) and with certified rounding (the default: the nearest doubles when valid, "
         "else snap rounding onto the power-of-two grid at the scale of the largest coordinate). Snap rounding needs "
         "a result whose edges do not cross, so the rounded kernels are left as computed: their certified column "
-        "counts the nearest doubles. GEOS's `isValid` is asked about the exact kernels' written polygons where every "
-        "coordinate is 0 or of magnitude between 1e-200 and 1e200 (\"invalid of checked\"; `-`: not asked). Columns "
+        "counts the nearest doubles. GEOS's `isValid` is asked about the exact kernels' written polygons, scaled exactly by "
+        "a power of two into its range, unless their coordinates spread over more than 2^400 (\"invalid of checked\"; "
+        "`-`: not asked). Columns "
         "`nearest_valid`, `certified_snapped`, `certified_valid`, `geos_valid`, `snap_displacement` of the CSV.\n\n";
   table(md, "kernel", by_kernel);
   md << "Per generator, kernel `exact`:\n\n";

@@ -125,15 +125,21 @@ PeerOutput geos_overlay(const MultiPolygon& a, const MultiPolygon& b, Operation 
 }
 
 std::optional<bool> geos_is_valid(const MultiPolygon& polygons, std::string* why) {
+  const std::optional<GeosValidityCopy> scaled = geos_validity_copy(polygons);
+  if (!scaled) return std::nullopt;
   Geos geos;
   try {
-    GEOSGeometry* g = geos.multipolygon(polygons);
+    GEOSGeometry* g = geos.multipolygon(scaled->polygons);
     char* reason = GEOSisValidReason_r(geos.ctx(), g);
     if (reason == nullptr) return std::nullopt;
     const std::string text = reason;
     GEOSFree_r(geos.ctx(), reason);
     if (text == "Valid Geometry") return true;
-    if (why) *why = text;
+    if (why) {
+      // GEOS names a place in the scaled copy's coordinates.
+      *why = text;
+      if (scaled->shift != 0) *why += " (coordinates multiplied by 2^" + std::to_string(scaled->shift) + ")";
+    }
     return false;
   } catch (const PeerException& e) {
     if (why) *why = e.what();

@@ -3,6 +3,9 @@
 // Preconditions: see peers.hpp. MK_HAVE_<LIBRARY> says which adapters are compiled in.
 #include "experiments/peers/peers.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace mk::experiments {
 
 std::vector<std::string_view> peer_names() {
@@ -66,6 +69,39 @@ std::vector<std::string> peer_versions() {
   out.push_back(cgal_version());
 #endif
   return out;
+}
+
+std::optional<GeosValidityCopy> geos_validity_copy(const MultiPolygon& polygons) {
+  const auto for_each_coordinate = [&](auto&& f) {
+    for (const OgcPolygon& p : polygons) {
+      for (const Point& q : p.shell) f(q.x), f(q.y);
+      for (const Ring& h : p.holes) {
+        for (const Point& q : h) f(q.x), f(q.y);
+      }
+    }
+  };
+  double largest = 0;
+  bool finite = true;
+  for_each_coordinate([&](double v) {
+    finite = finite && std::isfinite(v);
+    largest = std::max(largest, std::fabs(v));
+  });
+  if (!finite) return std::nullopt;
+  // 2^shift brings `largest` into [1, 2); every scaled coordinate that is not 0 is at least
+  // 2^-400 (checked), so each is a normal double and the scaling exact.
+  const int shift = largest > 0 ? -std::ilogb(largest) : 0;
+  bool in_range = true;
+  for_each_coordinate([&](double v) { in_range = in_range && (v == 0 || std::fabs(std::ldexp(v, shift)) >= 0x1p-400); });
+  if (!in_range) return std::nullopt;
+  GeosValidityCopy copy{polygons, shift};
+  const auto scale = [&](Ring& r) {
+    for (Point& q : r) q = {std::ldexp(q.x, shift), std::ldexp(q.y, shift)};
+  };
+  for (OgcPolygon& p : copy.polygons) {
+    scale(p.shell);
+    for (Ring& h : p.holes) scale(h);
+  }
+  return copy;
 }
 
 #ifndef MK_HAVE_GEOS

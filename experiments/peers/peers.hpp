@@ -58,9 +58,23 @@ bool is_peer(std::string_view name);
 // for an unknown name.
 PeerOutput run_peer(std::string_view name, const PeerInput& a, const PeerInput& b, Operation op);
 
-// GEOS's isValid (OGC validity) of polygons; empty when GEOS is not built in. `why`
+// GEOS's isValid (OGC validity) of polygons, asked about their copy scaled exactly by the
+// power of two that brings the largest coordinate magnitude into [1, 2): GEOS's orientation
+// tests multiply coordinate differences, which underflow for ulp-wide features at 1e-150 (and
+// overflow near 1e300), and then report crossings that are not there; scaled, the question
+// is the same and GEOS's arithmetic stays in range. Empty when GEOS is not built in, when a
+// coordinate is not finite, or when a nonzero coordinate of the scaled copy is below 2^-400
+// (a spread too wide for GEOS's products: its verdict would be about its arithmetic). `why`
 // receives GEOS's reason when invalid.
 std::optional<bool> geos_is_valid(const MultiPolygon& polygons, std::string* why = nullptr);
+
+// The copy of `polygons` that geos_is_valid asks GEOS about, every coordinate multiplied by
+// 2^shift, or empty when it asks nothing (see there).
+struct GeosValidityCopy {
+  MultiPolygon polygons;
+  int shift = 0;
+};
+std::optional<GeosValidityCopy> geos_validity_copy(const MultiPolygon& polygons);
 
 // "GEOS 3.11.1-CAPI-1.17.1", "Boost 1.74.0", ...: one line per peer library built in.
 std::vector<std::string> peer_versions();

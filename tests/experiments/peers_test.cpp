@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -68,6 +69,43 @@ TEST(Ogc, ExactCheckFollowsOgcRules) {
   EXPECT_FALSE(is_valid_ogc_exact({{{{0, 0}, {2, 0}, {0, 2}, {2, 2}}, {}}}, &why));
   // Two parts meeting at a vertex where their regions overlap (one inside the other's corner).
   EXPECT_FALSE(is_valid_ogc_exact(read_wkt("MULTIPOLYGON(((0 0,4 0,4 4,0 4,0 0)),((0 0,1 2,2 1,0 0)))"), &why));
+}
+
+// GEOS is asked about the copy scaled exactly into its range: mkbool's output (certified
+// rounding) for a 10-point star at 1e-151 intersected with its copy moved by one ulp in x,
+// three slivers an ulp or two wide, which GEOS 3.11 called a self-intersection as written
+// (its orientation products of ulp differences underflow) and valid once scaled by 2^499.
+TEST(Ogc, GeosIsAskedAboutAnExactlyScaledCopy) {
+  const MultiPolygon slivers = read_wkt(
+      "MULTIPOLYGON (((2.357850691896153e-151 7.25671825756607e-151, 2.357850691896153e-151 7.25671825756607e-151, -9.270509831248419e-152 2.853169548885461e-151, -9.270509831248417e-152 2.853169548885461e-151, 2.357850691896153e-151 7.25671825756607e-151)), ((-6.602190018309403e-151 4.7967718262742754e-151, -6.602190018309404e-151 4.796771826274276e-151, -2.9999999999999998e-151 3.67394039744206e-167, -5.670509622053321e-151 -4.119866395885342e-151, -5.67050962205332e-151 -4.119866395885342e-151, -2.9999999999999995e-151 3.67394039744206e-167, -6.602190018309403e-151 4.7967718262742754e-151)), ((-9.270509831248426e-152 -2.8531695488854605e-151, 2.375136448950187e-151 -7.309918347478887e-151, 2.375136448950187e-151 -7.309918347478887e-151, -9.270509831248424e-152 -2.8531695488854605e-151, -9.270509831248426e-152 -2.8531695488854605e-151)))");
+  std::string why;
+  EXPECT_TRUE(is_valid_ogc_exact(slivers, &why)) << why;
+  const std::optional<GeosValidityCopy> copy = geos_validity_copy(slivers);
+  ASSERT_TRUE(copy);
+  EXPECT_EQ(copy->shift, 499);  // the largest magnitude, 7.3e-151, is 1.82 * 2^-499
+  ASSERT_EQ(copy->polygons.size(), slivers.size());
+  for (std::size_t i = 0; i < slivers.size(); ++i) {
+    ASSERT_EQ(copy->polygons[i].shell.size(), slivers[i].shell.size());
+    for (std::size_t k = 0; k < slivers[i].shell.size(); ++k) {
+      // Exact: scaling back gives the written coordinates bit for bit.
+      EXPECT_EQ(std::ldexp(copy->polygons[i].shell[k].x, -499), slivers[i].shell[k].x);
+      EXPECT_EQ(std::ldexp(copy->polygons[i].shell[k].y, -499), slivers[i].shell[k].y);
+    }
+  }
+  // A bow tie at the same scale stays invalid for both.
+  const MultiPolygon bow_tie = read_wkt("POLYGON((0 0,2e-150 0,0 2e-150,2e-150 2e-150,0 0))");
+  EXPECT_FALSE(is_valid_ogc_exact(bow_tie, &why));
+  // A spread beyond 2^400 (or a coordinate that is not finite): GEOS is not asked.
+  EXPECT_FALSE(geos_validity_copy(read_wkt("POLYGON((0 0,1 0,1 1e-200,0 0))")));
+  EXPECT_FALSE(geos_is_valid(read_wkt("POLYGON((0 0,1 0,1 1e-200,0 0))")));
+  EXPECT_TRUE(geos_validity_copy(read_wkt("POLYGON((0 0,1 0,1 1e-120,0 0))")));
+  EXPECT_FALSE(geos_validity_copy({{{{0, 0}, {HUGE_VAL, 0}, {0, 1}}, {}}}));
+  if (!is_peer("geos")) GTEST_SKIP() << "built without GEOS: its verdicts are not asked";
+  EXPECT_EQ(geos_is_valid(slivers, &why), true) << why;
+  EXPECT_EQ(geos_is_valid(bow_tie, &why), false);
+  EXPECT_NE(why.find("(coordinates multiplied by 2^"), std::string::npos) << why;
+  // Near the largest doubles too (scaled by 2^-1023).
+  EXPECT_EQ(geos_is_valid(read_wkt("POLYGON((0 0,1e308 0,1e308 1e308,0 1e308,0 0))")), true);
 }
 
 TEST(Peers, EveryPeerGetsTwoOverlappingSquaresExactly) {

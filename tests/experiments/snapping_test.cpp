@@ -155,30 +155,33 @@ TEST(Snapping, ArtefactKindsRoundTripAndUnknownKindsAreRefused) {
   fs::remove_all(dir);
 }
 
-TEST(Snapping, GeosIsNotAskedBeyondItsRange) {
-  // Two overlapping squares at 1e-250: GEOS's orientation products underflow there, so the
-  // written output's geos_valid stays empty; the same squares at 1 are checked.
-  const auto squares = [](double s) {
+TEST(Snapping, GeosIsAskedAboutTheScaledOutputUnlessItSpreadsTooFar) {
+  // Two overlapping squares at 1, 1e-250 and 1e250: GEOS's orientation products would
+  // underflow or overflow at the last two, so it is asked about the written output scaled
+  // exactly by a power of two, and says valid at every scale. A union with a step of 1e-130
+  // beside coordinates of 3 spreads over more than 2^400: not asked.
+  const auto squares = [](double s, double step) {
     Case c;
     c.spec = {"cases", "squares", {}, 0};
     c.a.rings = {{{0, 0}, {2 * s, 0}, {2 * s, 2 * s}, {0, 2 * s}}};
-    c.b.rings = {{{s, s}, {3 * s, s}, {3 * s, 3 * s}, {s, 3 * s}}};
+    c.b.rings = {{{s, step * s}, {3 * s, step * s}, {3 * s, 3 * s}, {s, 3 * s}}};
     return c;
   };
   RunOptions o;
   o.kernels = {"exact", "double"};
   o.ops = {Operation::union_};
   o.regular = {true};
-  for (const double s : {1.0, 1e-250}) {
+  for (const auto& [s, step] : {std::pair{1.0, 1.0}, {1e-250, 1.0}, {1e250, 1.0}, {1.0, 1e-130}}) {
     std::vector<ResultRow> rows;
-    run_built_case({0, squares(s).spec}, squares(s), o, 0, [](std::size_t) {}, [&](const ResultRow& r) { rows.push_back(r); });
+    run_built_case({0, squares(s, step).spec}, squares(s, step), o, 0, [](std::size_t) {},
+                   [&](const ResultRow& r) { rows.push_back(r); });
     ASSERT_EQ(rows.size(), 2u);
     for (const auto& r : rows) {
       if (r.kernel == "exact") {
         EXPECT_EQ(r.verdict, Verdict::exact_match) << to_csv(r);
       }
-      const bool asked = is_peer("geos") && r.kernel == "exact" && s == 1.0;
-      EXPECT_EQ(r.geos_valid, asked ? std::optional<bool>(true) : std::nullopt) << "scale " << s << ": " << to_csv(r);
+      const bool asked = is_peer("geos") && r.kernel == "exact" && step == 1.0;
+      EXPECT_EQ(r.geos_valid, asked ? std::optional<bool>(true) : std::nullopt) << "scale " << s << ", step " << step << ": " << to_csv(r);
     }
   }
 }
