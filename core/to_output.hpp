@@ -139,6 +139,26 @@ std::vector<std::vector<Point>> rounded_cycles(const BooleanResult<K>& r, unsign
   return rounded;
 }
 
+// A rounded cycle as a polygon's ring is written: without the repeated points rounding made
+// (exact vertices an ulp apart that round to one double), which GEOS and Clipper never
+// write and CGAL's Polygon_2 refuses as not simple; the validity check judges the ring so
+// (is_valid_rounded_result_ogc). A ring that would keep fewer than three points is left as
+// it is (nearest rounding's invalid output, written as computed).
+inline std::vector<Point> without_repeats(const std::vector<Point>& ring) {
+  // Almost always none: found by one pass without a branch per point, the ring then copied
+  // whole.
+  bool repeats = ring.size() > 1 && ring.back() == ring.front();
+  for (std::size_t i = 1; i < ring.size(); ++i) repeats |= ring[i] == ring[i - 1];
+  if (!repeats) return ring;
+  std::vector<Point> out;
+  out.reserve(ring.size());
+  for (const Point& p : ring) {
+    if (out.empty() || !(out.back() == p)) out.push_back(p);
+  }
+  while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+  return out.size() < 3 ? ring : out;
+}
+
 }  // namespace detail
 
 // Up to this many crossings on its cycles, a result's rounding is certified exactly near them
@@ -254,9 +274,9 @@ Output to_output(const BooleanResult<K>& r, bool exact_coordinates = true, unsig
     if (r.unbounded) return;
     out.polygons.reserve(polygon_cycles.size());
     for (const auto& cycles : polygon_cycles) {
-      OgcPolygon p{rounded[static_cast<std::size_t>(cycles[0])], {}};
+      OgcPolygon p{detail::without_repeats(rounded[static_cast<std::size_t>(cycles[0])]), {}};
       p.holes.reserve(cycles.size() - 1);
-      for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(rounded[static_cast<std::size_t>(cycles[h])]);
+      for (std::size_t h = 1; h < cycles.size(); ++h) p.holes.push_back(detail::without_repeats(rounded[static_cast<std::size_t>(cycles[h])]));
       out.polygons.push_back(std::move(p));
     }
   };
