@@ -13,6 +13,7 @@
 
 #include "core/arrangement.hpp"
 #include "core/step6_construct.hpp"
+#include "core/sorting.hpp"
 #include "predicates/directions.hpp"
 
 namespace mk {
@@ -80,7 +81,7 @@ class ShellSweep {
     const auto less = [&](int u, int w) {
       return K::compare_vertices(arr_.vertex(u), arr_.vertex(w)) == Sign::negative;
     };
-    std::sort(crossings.begin(), crossings.end(), less);
+    sort_by_predicates<K>(crossings.begin(), crossings.end(), less);
     rank_.assign(static_cast<std::size_t>(nv), -1);
     std::size_t c = 0;
     for (int v = 0; v < arr_.num_points(); ++v) {
@@ -178,7 +179,7 @@ class ShellSweep {
       }
       // The holes whose first vertex this is, from the top: both their edges enter here, and
       // the upper one comes first from the top.
-      std::sort(entering.begin(), entering.end(), [&](int a, int b) { return is_below(b, a); });
+      sort_by_predicates<K>(entering.begin(), entering.end(), [&](int a, int b) { return is_below(b, a); });
       upper.clear();
       for (const int e : entering) {
         const int c = edges_[e].cycle;

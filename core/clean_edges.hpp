@@ -21,6 +21,7 @@
 #include "core/buckets.hpp"
 #include "core/locator.hpp"
 #include "core/pairs.hpp"
+#include "core/sorting.hpp"
 #include "predicates/segments.hpp"
 
 namespace mk {
@@ -86,7 +87,7 @@ bool edges_meet_only_at_ends(const std::vector<typename K::Point>& pts, std::spa
       if (meet(below, above)) return false;  // neighbours now
       continue;
     }
-    std::sort(starting.begin(), starting.end(), [&](int a, int b) { return is_below(a, b); });
+    sort_by_predicates<K>(starting.begin(), starting.end(), [&](int a, int b) { return is_below(a, b); });
     if (meet(below, starting.front()) || meet(starting.back(), above)) return false;
     for (std::size_t k = 0; k + 1 < starting.size(); ++k) {
       if (meet(starting[k], starting[k + 1])) return false;

@@ -23,6 +23,7 @@
 #include "core/locator.hpp"
 #include "core/step6_construct.hpp"
 #include "core/winding_arrangement.hpp"
+#include "core/sorting.hpp"
 #include "predicates/directions.hpp"
 #include "predicates/ray.hpp"
 
@@ -82,7 +83,7 @@ std::vector<int> link_windings(const WindingArrangement<K>& wa) {
   };
   for (std::size_t v = 0; v + 1 < begin.size(); ++v) {
     if (begin[v + 1] - begin[v] < 3) continue;  // two ends: either order is the angular one
-    std::sort(ends.begin() + begin[v], ends.begin() + begin[v + 1],
+    sort_by_predicates<K>(ends.begin() + begin[v], ends.begin() + begin[v + 1],
               [&](const LinkEnd& x, const LinkEnd& y) { return angles.compare(dir_of(x.code), dir_of(y.code)) == Sign::negative; });
   }
 

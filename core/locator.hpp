@@ -16,6 +16,8 @@
 
 #include "core/arrangement.hpp"
 #include "core/buckets.hpp"
+#include "core/error.hpp"
+#include "core/sorting.hpp"
 #include "predicates/ray.hpp"
 
 namespace mk {
@@ -66,10 +68,15 @@ class BlockedOrder {
     return after;
   }
 
-  // Removes e, which is present.
+  // Removes e, which is present. Where the comparison does not find it there (inconsistent
+  // inexact predicates: a naive kernel's products overflowed, say), throws KernelFailure
+  // rather than remove another element or read past the end.
   template <class Less>
   void erase(int e, Less&& less) {
     const auto [b, i] = find(e, less);
+    if (b >= blocks_.size() || i >= blocks_[b].size() || blocks_[b][i] != e) {
+      throw KernelFailure("the sweep's order of edges is inconsistent (inexact predicates)");
+    }
     auto& block = blocks_[b];
     block.erase(block.begin() + static_cast<std::ptrdiff_t>(i));
     finger_ = {b, i};
@@ -344,7 +351,7 @@ class WindingLocator {
       // Edges entering at p lie next to each other on the line: inserted from the top, each
       // finds the edge just above it already there, and takes its value from it.
       entering.assign(by_lo.order.begin() + by_lo.begin[p], by_lo.order.begin() + by_lo.begin[p + 1]);
-      if (entering.size() > 1) std::sort(entering.begin(), entering.end(), [&](int a, int b) { return is_below(b, a); });
+      if (entering.size() > 1) sort_by_predicates<K>(entering.begin(), entering.end(), [&](int a, int b) { return is_below(b, a); });
       for (const int e : entering) {
         const int up = line.insert(e, below_of);
         below[e] = contribution(e) + (up < 0 ? 0 : below[up]);

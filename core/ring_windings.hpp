@@ -21,6 +21,7 @@
 #include "core/buckets.hpp"
 #include "core/locator.hpp"
 #include "core/prepare.hpp"
+#include "core/sorting.hpp"
 #include "predicates/directions.hpp"
 #include "predicates/ray.hpp"
 
@@ -81,7 +82,7 @@ AngularIncidence sort_around_vertices(const Arrangement<K>& arr, const std::vect
     const auto b = inc.order.begin() + begin[v];
     const auto e = inc.order.begin() + begin[v + 1];
     if (e - b < 2 || (e - b == 2 && half[b[0]].count == half[b[1]].count)) continue;
-    std::sort(b, e, [&](int i, int j) {
+    sort_by_predicates<K>(b, e, [&](int i, int j) {
       const HalfEdge& x = half[i];
       const HalfEdge& y = half[j];
       if (x.count != y.count) return x.count < y.count;

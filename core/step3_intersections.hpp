@@ -20,6 +20,7 @@
 #include "core/error.hpp"
 #include "core/pairs.hpp"
 #include "core/parallel.hpp"
+#include "core/sorting.hpp"
 #include "predicates/segments.hpp"
 
 namespace mk {
@@ -260,7 +261,7 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
             }
             on_edge.resize(m);
           } else {
-            std::sort(on_edge.begin(), on_edge.end(), before);
+            sort_by_predicates<K>(on_edge.begin(), on_edge.end(), before);
             on_edge.erase(std::unique(on_edge.begin(), on_edge.end()), on_edge.end());
           }
           for (const int id : on_edge) {
