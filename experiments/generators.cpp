@@ -3,6 +3,7 @@
 // Preconditions: none.
 #include "experiments/generators.hpp"
 
+#include <array>
 #include <charconv>
 
 #include <stdexcept>
@@ -99,6 +100,10 @@ const std::vector<Generator>& generators() {
        {"shared_vertex", "shared_edge", "collinear_overlap", "vertex_on_edge", "identical", "same_vertex_set", "hole_filled",
         "holes_collinear", "nested_touching", "collinear_vertices", "paper_figures"},
        &rotated},
+      {"magnitude", "a lattice configuration at 10^e, e in -300..300 (param e): products of coordinates underflow or overflow",
+       {"shared_vertex", "shared_edge", "collinear_overlap", "vertex_on_edge", "identical", "same_vertex_set", "hole_filled",
+        "holes_collinear", "nested_touching", "collinear_vertices", "paper_figures"},
+       &magnitude},
       {"ulp_perturbed", "B's vertex k ulps off A's slanted edge, k in -8..8", {"outside_triangle", "crossing_triangle"}, &ulp_perturbed},
       {"kettner_grid", "Kettner et al.'s orient2d grids as polygon pairs (p + (i, j) ulps)", {"shared_edge_a", "shared_edge_b", "chain_a"}, &kettner_grid},
       {"blob", "two smooth curves of n vertices crossing twice", {"smooth"}, &blob},
@@ -196,6 +201,14 @@ std::vector<CaseSpec> plan_sweep(const PlanOptions& options) {
       for (int s = 0; s < seeds; ++s) {
         for (const auto v : g.variants) {
           for (int k = -8; k <= 8; ++k) add(v, {{"k", k}});
+        }
+      }
+    } else if (g.name == "magnitude") {
+      // Each exponent once per seed, the lattice generators taken in turn.
+      constexpr std::array<std::int64_t, 9> exponents{-300, -200, -150, -100, 100, 150, 200, 250, 300};
+      for (int s = 0; s < seeds; ++s) {
+        for (std::size_t k = 0; k < exponents.size(); ++k) {
+          add(g.variants[(static_cast<std::size_t>(s) * exponents.size() + k) % g.variants.size()], {{"e", exponents[k]}});
         }
       }
     } else if (g.name == "blob" || g.name == "star") {

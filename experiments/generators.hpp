@@ -32,6 +32,7 @@ PolygonPair blob(const CaseSpec& spec);
 PolygonPair star(const CaseSpec& spec);
 // Near-degenerate doubles (generators_numeric.cpp).
 PolygonPair rotated(const CaseSpec& spec);
+PolygonPair magnitude(const CaseSpec& spec);
 PolygonPair ulp_perturbed(const CaseSpec& spec);
 PolygonPair kettner_grid(const CaseSpec& spec);
 // The paper's example figures (generators_paper.cpp).

@@ -1,10 +1,13 @@
 // Near-degenerate inputs in doubles, where rounded arithmetic decides wrongly: rotated
-// (exact degeneracies rotated so that rounding breaks them), ulp_perturbed (a vertex k ulps
-// off an edge) and kettner_grid (the orient2d grids of Kettner et al. as polygon pairs).
+// (exact degeneracies rotated so that rounding breaks them), magnitude (the same configurations
+// at 10^e, where products underflow or overflow), ulp_perturbed (a vertex k ulps off an edge)
+// and kettner_grid (the orient2d grids of Kettner et al. as polygon pairs).
 // [MK89 §3.3] (numerical accuracy) [KMPSY08 §4] (classroom examples)
 // Preconditions: ulp_perturbed's k and kettner_grid's i, j are small (|k| <= 255, i, j < 256).
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
+#include <string>
 
 #include "experiments/generator_util.hpp"
 #include "experiments/generators.hpp"
@@ -45,6 +48,34 @@ PolygonPair rotated(const CaseSpec& spec) {
   for (Polygon* poly : {&p.a, &p.b}) {
     for (auto& ring : poly->rings) {
       for (auto& v : ring) v = {c * v.x - s * v.y, s * v.x + c * v.y};
+    }
+  }
+  return p;
+}
+
+PolygonPair magnitude(const CaseSpec& spec) {
+  auto rng = case_rng(spec);
+  const std::int64_t e = spec.param("e", 0);
+  if (e < -300 || e > 300) throw std::invalid_argument("generator magnitude: e must be in -300..300");
+  // The variant names the lattice generator, as for rotated; its own variant is drawn here.
+  const Generator& base = find_generator(spec.variant);
+  if (base.make == &rotated || base.make == &magnitude || spec.variant == "blob" || spec.variant == "star" ||
+      spec.variant == "kettner_grid" || spec.variant == "ulp_perturbed") {
+    throw std::invalid_argument("generator magnitude: '" + spec.variant + "' is not a lattice generator");
+  }
+  CaseSpec inner{spec.variant,
+                 std::string(base.variants[static_cast<std::size_t>(
+                     uniform(rng, 0, static_cast<std::int64_t>(base.variants.size()) - 1))]),
+                 {},
+                 rng()};
+  PolygonPair p = base.make(inner);
+  // Every coordinate times the double nearest 10^e, rounded: a point shared by A and B stays
+  // shared, points on a common line may leave it, and the coordinates' products (every
+  // orientation test's) underflow below about 1e-154 and overflow above about 1e154.
+  const double factor = std::strtod(("1e" + std::to_string(e)).c_str(), nullptr);
+  for (Polygon* poly : {&p.a, &p.b}) {
+    for (auto& ring : poly->rings) {
+      for (auto& v : ring) v = {v.x * factor, v.y * factor};
     }
   }
   return p;

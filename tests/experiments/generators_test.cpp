@@ -4,6 +4,7 @@
 // Preconditions: none.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "arithmetic/kernels/rational_kernel.hpp"
@@ -21,7 +22,46 @@ std::vector<std::pair<std::string, std::int64_t>> small_params(std::string_view 
   if (generator == "kettner_grid") return {{"i", 3 * s}, {"j", 5 * s}};
   if (generator == "ulp_perturbed") return {{"k", s - 1}};
   if (generator == "grid_random") return {{"grid", s % 2 == 0 ? 6 : 10}};
+  if (generator == "magnitude") return {{"e", s % 2 == 0 ? 150 : -150}};
   return {};
+}
+
+// magnitude: the lattice case times 10^e (near-integer multiples of 1e150 here, integers at
+// e = 0), and the exact kernel's results at 10^300 and 10^-300, where every product of two
+// coordinates overflows or underflows, match the exact reference.
+TEST(Generators, MagnitudeScalesALatticeCaseAndTheExactKernelKeepsUp) {
+  const Generator& g = find_generator("magnitude");
+  for (const auto v : g.variants) {
+    const Case unit = make_case({"magnitude", std::string(v), {{"e", 0}}, 11});
+    const Case big = make_case({"magnitude", std::string(v), {{"e", 150}}, 11});
+    ASSERT_EQ(unit.a.rings.size(), big.a.rings.size()) << v;
+    for (std::size_t r = 0; r < unit.a.rings.size(); ++r) {
+      ASSERT_EQ(unit.a.rings[r].size(), big.a.rings[r].size()) << v;
+      for (std::size_t k = 0; k < unit.a.rings[r].size(); ++k) {
+        const Point u = unit.a.rings[r][k], w = big.a.rings[r][k];
+        EXPECT_EQ(u.x, std::round(u.x)) << v;
+        EXPECT_EQ(w.x, u.x * 1e150) << v;  // the same double operation
+        EXPECT_EQ(w.y, u.y * 1e150) << v;
+      }
+    }
+  }
+  RunOptions o;
+  o.kernels = {"exact"};
+  o.ops = {Operation::intersection, Operation::union_, Operation::difference};
+  o.regular = {true};
+  int runs = 0;
+  for (const std::int64_t e : {300, -300}) {
+    for (std::uint64_t seed = 0; seed < 12; ++seed) {
+      const CaseSpec spec{"magnitude", std::string(g.variants[seed % g.variants.size()]), {{"e", e}}, mix_seed(3, "magnitude", seed)};
+      const Case c = make_case(spec);
+      run_built_case({0, spec}, c, o, 0, [](std::size_t) {}, [&](const ResultRow& r) {
+        if (r.kernel != "exact") return;
+        ++runs;
+        EXPECT_TRUE(r.verdict == Verdict::exact_match || r.verdict == Verdict::refused) << to_csv(r);
+      });
+    }
+  }
+  EXPECT_EQ(runs, 2 * 12 * 3);
 }
 
 TEST(Generators, EveryVariantBuildsAValidInputReproducibly) {
