@@ -27,20 +27,31 @@ double step_ulps(double x, std::int64_t k) {
 
 }  // namespace
 
-PolygonPair rotated(const CaseSpec& spec) {
-  auto rng = case_rng(spec);
-  // The variant names the exactly degenerate generator; its own variant is drawn here.
+PolygonPair magnitude(const CaseSpec& spec);
+
+namespace {
+
+// The case of the exactly degenerate lattice generator that the variant of a generator
+// built on them (rotated, magnitude) names; its own variant and seed are drawn from rng.
+PolygonPair lattice_case(const CaseSpec& spec, std::mt19937_64& rng) {
   const Generator& base = find_generator(spec.variant);
-  if (base.make == &rotated || spec.variant == "blob" || spec.variant == "star" || spec.variant == "kettner_grid" ||
-      spec.variant == "ulp_perturbed") {
-    throw std::invalid_argument("generator rotated: '" + spec.variant + "' is not a lattice generator");
+  if (base.make == nullptr || base.make == &rotated || base.make == &magnitude || spec.variant == "blob" ||
+      spec.variant == "star" || spec.variant == "kettner_grid" || spec.variant == "ulp_perturbed") {
+    throw std::invalid_argument("generator " + spec.generator + ": '" + spec.variant + "' is not a lattice generator");
   }
   CaseSpec inner{spec.variant,
                  std::string(base.variants[static_cast<std::size_t>(
                      uniform(rng, 0, static_cast<std::int64_t>(base.variants.size()) - 1))]),
                  {},
                  rng()};
-  PolygonPair p = base.make(inner);
+  return base.make(inner);
+}
+
+}  // namespace
+
+PolygonPair rotated(const CaseSpec& spec) {
+  auto rng = case_rng(spec);
+  PolygonPair p = lattice_case(spec, rng);
   // One rotation for both polygons: a point shared by A and B stays shared (the same double
   // operations on the same input), but points on a common line generally leave it.
   const double angle = 6.283185307179586 * uniform01(rng);
@@ -57,18 +68,7 @@ PolygonPair magnitude(const CaseSpec& spec) {
   auto rng = case_rng(spec);
   const std::int64_t e = spec.param("e", 0);
   if (e < -300 || e > 300) throw std::invalid_argument("generator magnitude: e must be in -300..300");
-  // The variant names the lattice generator, as for rotated; its own variant is drawn here.
-  const Generator& base = find_generator(spec.variant);
-  if (base.make == &rotated || base.make == &magnitude || spec.variant == "blob" || spec.variant == "star" ||
-      spec.variant == "kettner_grid" || spec.variant == "ulp_perturbed") {
-    throw std::invalid_argument("generator magnitude: '" + spec.variant + "' is not a lattice generator");
-  }
-  CaseSpec inner{spec.variant,
-                 std::string(base.variants[static_cast<std::size_t>(
-                     uniform(rng, 0, static_cast<std::int64_t>(base.variants.size()) - 1))]),
-                 {},
-                 rng()};
-  PolygonPair p = base.make(inner);
+  PolygonPair p = lattice_case(spec, rng);
   // Every coordinate times the double nearest 10^e, rounded: a point shared by A and B stays
   // shared, points on a common line may leave it, and the coordinates' products (every
   // orientation test's) underflow below about 1e-154 and overflow above about 1e154.
