@@ -3,6 +3,7 @@
 // Preconditions: none; validation of coordinates happens in validate_polygon (core/error.hpp).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -27,6 +28,18 @@ struct BasicPolygon {
 };
 
 using Ring = BasicRing<Point>;
+
+// Drops a ring's repeated points: each point equal to the one before it, and at the end
+// those equal to the first (the ring is read closed). The readers (io/ring_rules.hpp) and the
+// written output (core/to_output.hpp) drop them alike.
+inline void remove_repeated_points(Ring& ring) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    if (kept == 0 || !(ring[i] == ring[kept - 1])) ring[kept++] = ring[i];
+  }
+  while (kept > 1 && ring[kept - 1] == ring[0]) --kept;
+  ring.resize(kept);
+}
 using Polygon = BasicPolygon<Point>;
 
 // An OGC polygon with holes: a shell and the holes directly inside it. Used by the

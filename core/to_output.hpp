@@ -150,12 +150,8 @@ inline std::vector<Point> without_repeats(const std::vector<Point>& ring) {
   bool repeats = ring.size() > 1 && ring.back() == ring.front();
   for (std::size_t i = 1; i < ring.size(); ++i) repeats |= ring[i] == ring[i - 1];
   if (!repeats) return ring;
-  std::vector<Point> out;
-  out.reserve(ring.size());
-  for (const Point& p : ring) {
-    if (out.empty() || !(out.back() == p)) out.push_back(p);
-  }
-  while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+  std::vector<Point> out = ring;
+  remove_repeated_points(out);
   return out.size() < 3 ? ring : out;
 }
 

@@ -87,14 +87,7 @@ std::string describe_ogc_ring_problem(const Ring& closed, OgcRingProblem problem
   return "ring is invalid";
 }
 
-void remove_repeated_vertices(Ring& ring) {
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    if (kept == 0 || !(ring[i] == ring[kept - 1])) ring[kept++] = ring[i];
-  }
-  while (kept > 1 && ring[kept - 1] == ring[0]) --kept;
-  ring.resize(kept);
-}
+void remove_repeated_vertices(Ring& ring) { remove_repeated_points(ring); }
 
 int ring_orientation(const Ring& ring) {
   if (ring.size() < 3) return 0;
