@@ -22,6 +22,7 @@
 #include "core/error.hpp"
 #include "core/pairs.hpp"
 #include "core/parallel.hpp"
+#include "core/sorting.hpp"
 #include "predicates/segments.hpp"
 
 namespace mk {
@@ -425,6 +426,61 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
   return true;
 }
 
+// Gives every distinct input point of A and B (`total` vertices in all) an id in
+// lexicographic order: fills `points` (distinct, sorted), their x-ranks and id_of (input
+// number, counted polygon after polygon and ring after ring -> id).
+template <Kernel K>
+void number_points(const std::array<const BasicPolygon<typename K::Point>*, 2>& in, std::size_t total, unsigned threads,
+                   std::vector<typename K::Point>& points, std::vector<int>& x_rank, std::vector<int>& id_of) {
+  points.reserve(total);
+  // Rings of smooth or convex shapes consist of a few long monotone runs, merged directly;
+  // otherwise the points themselves (not indices into the rings) are sorted. The second
+  // member numbers the vertices polygon after polygon, ring after ring.
+  constexpr std::size_t max_runs = 32;
+  if (!number_points_by_runs<K>(in, max_runs, points, x_rank, id_of)) {
+    std::vector<std::pair<typename K::Point, int>> sorted;
+    sorted.reserve(total);
+    for (const auto* poly : in) {
+      for (const auto& ring : poly->rings) {
+        for (const auto& q : ring) sorted.emplace_back(q, static_cast<int>(sorted.size()));
+      }
+    }
+    // The halves sorted on two threads, then merged (append_distinct keeps the same point
+    // for equal ones in any order).
+    const auto less = [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; };
+    x_rank.reserve(total);
+    const auto take = [&](const std::pair<typename K::Point, int>& e) {
+      id_of[e.second] = append_distinct<K>(points, x_rank, e.first);
+    };
+    // Points of doubles, which every kernel over them compares as doubles, are sorted by
+    // their bits (a radix sort); others by the kernel's comparison.
+    const auto sort_range = [&](auto first, auto last) {
+      if constexpr (std::is_same_v<typename K::Point, Point>) {
+        sort_points_lexicographic(std::span(first, last));
+      } else {
+        std::sort(first, last, less);
+      }
+    };
+    if (threads_for(total, threads) < 2) {
+      sort_range(sorted.begin(), sorted.end());
+      for (const auto& e : sorted) take(e);
+    } else {
+      const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(total / 2);
+      run_tasks(2, 2, [&](std::size_t half) {
+        if (half == 0) {
+          sort_range(sorted.begin(), mid);
+        } else {
+          sort_range(mid, sorted.end());
+        }
+      });
+      auto i = sorted.begin(), j = mid;
+      while (i != mid && j != sorted.end()) take(less(*j, *i) ? *j++ : *i++);
+      for (; i != mid; ++i) take(*i);
+      for (; j != sorted.end(); ++j) take(*j);
+    }
+  }
+}
+
 }  // namespace detail
 
 // Gives every distinct input point of A and B an id in lexicographic order, makes both
@@ -439,44 +495,7 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
     for (const auto& ring : poly->rings) total += ring.size();
   }
   std::vector<int> id_of(total);
-  arr.points.reserve(total);
-  // Rings of smooth or convex shapes consist of a few long monotone runs, merged directly;
-  // otherwise the points themselves (not indices into the rings) are sorted. The second
-  // member numbers the vertices polygon after polygon, ring after ring.
-  constexpr std::size_t max_runs = 32;
-  if (!detail::number_points_by_runs<K>(in, max_runs, arr.points, arr.x_rank, id_of)) {
-    std::vector<std::pair<typename K::Point, int>> sorted;
-    sorted.reserve(total);
-    for (const auto* poly : in) {
-      for (const auto& ring : poly->rings) {
-        for (const auto& q : ring) sorted.emplace_back(q, static_cast<int>(sorted.size()));
-      }
-    }
-    // The halves sorted on two threads, then merged (append_distinct keeps the same point
-    // for equal ones in any order).
-    const auto less = [](const auto& x, const auto& y) { return compare_xy<K>(x.first, y.first) == Sign::negative; };
-    arr.x_rank.reserve(total);
-    const auto take = [&](const std::pair<typename K::Point, int>& e) {
-      id_of[e.second] = detail::append_distinct<K>(arr.points, arr.x_rank, e.first);
-    };
-    if (threads_for(total, threads) < 2) {
-      std::sort(sorted.begin(), sorted.end(), less);
-      for (const auto& e : sorted) take(e);
-    } else {
-      const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(total / 2);
-      run_tasks(2, 2, [&](std::size_t half) {
-        if (half == 0) {
-          std::sort(sorted.begin(), mid, less);
-        } else {
-          std::sort(mid, sorted.end(), less);
-        }
-      });
-      auto i = sorted.begin(), j = mid;
-      while (i != mid && j != sorted.end()) take(less(*j, *i) ? *j++ : *i++);
-      for (; i != mid; ++i) take(*i);
-      for (; j != sorted.end(); ++j) take(*j);
-    }
-  }
+  detail::number_points<K>(in, total, threads, arr.points, arr.x_rank, id_of);
 
   // Each polygon's rings as point ids (on two threads when there are several).
   std::array<std::size_t, 2> first_ref{0, 0};  // input number of each polygon's first vertex
