@@ -22,6 +22,7 @@
 #include "io/native_json.hpp"
 #include "io/parts.hpp"
 #include "io/format.hpp"
+#include "io/json_util.hpp"
 #include "io/wkt.hpp"
 
 namespace mk::cli {
@@ -245,10 +246,14 @@ void write_case_result(const BooleanOutput& r, bool want_result, Json& out) {
 // Fills `out` for one case; throws CaseError when the case fails.
 void run_case(std::string_view text, const BatchOptions& options, Json& out) {
   InputJson line;
+  std::vector<io_detail::RepeatedMember> repeated;
   try {
-    line = InputJson::parse(text);
-  } catch (const InputJson::parse_error& e) {
+    line = io_detail::parse_json_dom(text, repeated);
+  } catch (const InputJson::exception& e) {  // syntax, or a number beyond the doubles
     throw CaseError{"malformed JSON: " + without_exception_id(e.what())};
+  }
+  if (!repeated.empty()) {
+    throw CaseError{"at " + repeated.front().path + ": " + io_detail::repeated_member_problem(repeated.front().name)};
   }
   if (!line.is_object()) throw CaseError{"a line must be a JSON object"};
   if (const auto id = line.find("id"); id != line.end()) {

@@ -3,6 +3,7 @@
 // Preconditions: none; malformed input throws mk::InvalidInput naming the element's path.
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -24,7 +25,8 @@ enum class Place { top, feature_member, feature_geometry, collection_member };
 
 class GeoJsonReader {
  public:
-  explicit GeoJsonReader(std::vector<std::string>* part_names) : part_names_(part_names) {}
+  GeoJsonReader(std::vector<std::string>* part_names, std::vector<io_detail::RepeatedMember> repeated)
+      : part_names_(part_names), repeated_(std::move(repeated)) {}
 
   MultiPolygon read(const Json& root) {
     read_object(root, "", Place::top);
@@ -37,14 +39,21 @@ class GeoJsonReader {
                        what);
   }
 
-  static const Json& member(const Json& object, std::string_view key, const std::string& path) {
+  // A member the reader reads; repeated ones are refused (io_detail::CheckedDom), others
+  // (properties, foreign members) are left alone like their values.
+  const Json& member(const Json& object, std::string_view key, const std::string& path) const {
+    if (!repeated_.empty()) {
+      const std::string where = key_path(path, key);
+      for (const auto& r : repeated_) {
+        if (r.path == where) fail(where, io_detail::repeated_member_problem(r.name));
+      }
+    }
     const auto it = object.find(key);
     if (it == object.end()) fail(path, "missing \"" + std::string(key) + "\" member");
     return *it;
   }
 
-  static const Json& array_member(const Json& object, std::string_view key,
-                                  const std::string& path) {
+  const Json& array_member(const Json& object, std::string_view key, const std::string& path) const {
     const Json& value = member(object, key, path);
     if (!value.is_array()) {
       fail(key_path(path, key), "expected an array, found " + json_type_name(value));
@@ -170,12 +179,15 @@ class GeoJsonReader {
 
   MultiPolygon result_;
   std::vector<std::string>* part_names_;
+  std::vector<io_detail::RepeatedMember> repeated_;
 };
 
 }  // namespace
 
 MultiPolygon read_geojson(std::string_view text, std::vector<std::string>* part_names) {
-  return GeoJsonReader(part_names).read(io_detail::parse_json(text, "GeoJSON"));
+  std::vector<io_detail::RepeatedMember> repeated;
+  const Json root = io_detail::parse_json(text, "GeoJSON", &repeated);
+  return GeoJsonReader(part_names, std::move(repeated)).read(root);
 }
 
 }  // namespace mk

@@ -84,6 +84,21 @@ TEST(cliBatch, EveryFailingCaseGivesItsOwnErrorLine) {
   EXPECT_EQ(lines[6]["id"], 7);
 }
 
+// A case line naming a member twice ("op" twice: nlohmann kept the last and ran that
+// operation) is refused with its own error line; the next line still runs. [RFC8259 §4]
+TEST(cliBatch, ARepeatedMemberIsAnErrorNotTheLastValue) {
+  const std::string twice = R"({"id": 1, "op": "union", "op": "intersection", "a_wkt": ")" + std::string(square_a) +
+                            R"(", "b_wkt": ")" + std::string(square_b) + "\"}\n";
+  const ProcessResult r = run_mkbool({"batch", "-"}, twice + case_line(2, "union", square_a, square_b));
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const auto lines = parse_lines(r.out);
+  ASSERT_EQ(lines.size(), 2u) << r.out;
+  ASSERT_TRUE(lines[0].contains("error")) << lines[0];
+  EXPECT_NE(lines[0]["error"].get<std::string>().find("at op: member \"op\" is repeated"), std::string::npos) << lines[0];
+  EXPECT_FALSE(lines[1].contains("error")) << lines[1];
+  EXPECT_EQ(lines[1]["id"], 2);
+}
+
 TEST(cliBatch, SymdifferenceIsAnAliasOfXor) {
   const std::string input = case_line(1, "symdifference", square_a, square_b) + case_line(2, "xor", square_a, square_b);
   const ProcessResult r = run_mkbool({"batch", "-"}, input);

@@ -217,6 +217,30 @@ TEST(ioGeoJson, WriterForms) {
   EXPECT_EQ(read_geojson(text).size(), 2u);
 }
 
+// A member the reader reads, given twice in one object, is refused with its path (nlohmann
+// would keep the last value, other readers the first); repeated names the reader does not
+// read (in properties, in foreign members) are left alone like their values. [RFC8259 §4]
+TEST(ioGeoJson, RepeatedMembersItReadsAreRefusedWithTheirPath) {
+  EXPECT_TRUE(rejects([] { read_geojson(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]],"coordinates":[]})"); },
+                      "GeoJSON at coordinates: member \"coordinates\" is repeated"));
+  EXPECT_TRUE(rejects(
+      [] {
+        read_geojson(R"({"type":"FeatureCollection","features":[)"
+                     R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[]}},)"
+                     R"({"type":"Feature","properties":{},"geometry":{"type":"Polygon","type":"MultiPolygon","coordinates":[]}}]})");
+      },
+      "GeoJSON at features[1].geometry.type: member \"type\" is repeated"));
+  EXPECT_TRUE(rejects([] { read_geojson(R"({"type":"Feature","geometry":null,"geometry":)" + polygon_json(square_coordinates) + "}"); },
+                      "GeoJSON at geometry: member \"geometry\" is repeated"));
+  EXPECT_TRUE(rejects([] { read_geojson(R"({"type":"GeometryCollection","geometries":[],"geometries":[]})"); },
+                      "GeoJSON at geometries: member"));
+  // Not read, not refused: repeated names in properties and in a foreign member.
+  const MultiPolygon mp = read_geojson(R"({"type":"Feature","properties":{"type":1,"type":2},"crs":{"a":1,"a":2},"geometry":)" +
+                                       polygon_json(square_coordinates) + "}");
+  ASSERT_EQ(mp.size(), 1u);
+  EXPECT_EQ(mp[0].shell, square());
+}
+
 TEST(ioGeoJson, WriteThenReadIsIdentity) {
   const MultiPolygon mp{OgcPolygon{{{0.1, 0.2}, {4e-300, 0.3}, {4, 4.5}, {-0.7, 4}},
                                    {{{1, 1}, {1, 2}, {2, 2}, {2, 1}}}}};

@@ -157,6 +157,15 @@ TEST(ioNativeJson, OutputWriterCarriesTypesExactValuesAndNonRegularParts) {
   EXPECT_EQ(j["isolated_points"], nlohmann::json::parse("[[5,5]]"));
 }
 
+// Every member of native JSON is read, so any name given twice in one object is refused,
+// with its path. [RFC8259 §4]
+TEST(ioNativeJson, RepeatedMembersAreRefusedWithTheirPath) {
+  EXPECT_TRUE(rejects([] { read_native_json(R"({"type":"island","rings":[[[0,0],[1,0],[1,1]]],"rings":[]})"); },
+                      "native JSON at rings: member \"rings\" is repeated"));
+  EXPECT_TRUE(rejects([] { read_native_json(R"({"type":"island","type":"hole","rings":[[[0,0],[1,0],[1,1]]]})"); },
+                      "native JSON at type: member \"type\" is repeated"));
+}
+
 TEST(ioNativeJson, OutputWriterForEmptyAndUnboundedResults) {
   Output out;
   nlohmann::json j = nlohmann::json::parse(write_native_json(out, "double"));
