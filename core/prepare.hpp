@@ -348,12 +348,12 @@ struct PointRun {
 };
 
 // Merges sorted runs into `points` (distinct) and their x-ranks (the rank of their x among
-// the distinct x values), setting id_of (input number -> index in points) for every point
-// read. A binary min-heap of run indices keyed by the runs' current points;
+// the distinct x values), setting id_of (input number -> id_base + index in points) for
+// every point read. A binary min-heap of run indices keyed by the runs' current points;
 // sifting moves 4-byte indices into a hole instead of swapping runs.
 template <Kernel K>
 void merge_runs(std::vector<PointRun<typename K::Point>>& runs, std::vector<typename K::Point>& points,
-                std::vector<int>& x_rank, std::vector<int>& id_of) {
+                std::vector<int>& x_rank, std::vector<int>& id_of, int id_base = 0) {
   using P = typename K::Point;
   const auto less = [](const P& u, const P& w) { return compare_xy<K>(u, w) == Sign::negative; };
   std::vector<int> order(runs.size());
@@ -377,7 +377,7 @@ void merge_runs(std::vector<PointRun<typename K::Point>>& runs, std::vector<type
   x_rank.reserve(n);
   while (!order.empty()) {
     PointRun<P>& run = runs[order.front()];
-    id_of[run.ring_ref + run.pos] = append_distinct<K>(points, x_rank, run.key);
+    id_of[run.ring_ref + run.pos] = id_base + append_distinct<K>(points, x_rank, run.key);
     run.pos += run.step;
     if (run.pos == run.end) {
       order.front() = order.back();
@@ -389,17 +389,90 @@ void merge_runs(std::vector<PointRun<typename K::Point>>& runs, std::vector<type
   }
 }
 
+// Below this many input points the runs are merged on one thread: handing half to another
+// costs more than it saves.
+inline constexpr int kHalvesFrom = 1 << 16;
+
+// merge_runs on two threads: each run is cut at a pivot point near the median (of samples
+// taken along the runs, one per 512 points), the parts below it merged on this thread into
+// `points` and the others on a second into their own arrays, then appended. The upper
+// half's ids are written as if every lower point were distinct (its first id the number of
+// lower input points) and moved down afterwards only when the lower half held repeated
+// points, since moving them is a scattered pass over half of id_of; its x-ranks, a
+// sequential pass, are moved up while appending. Points equal to the pivot all fall in the
+// upper half, so repeated points never straddle the cut.
+template <Kernel K>
+void merge_runs_in_halves(std::vector<PointRun<typename K::Point>>& runs, std::vector<typename K::Point>& points,
+                          std::vector<int>& x_rank, std::vector<int>& id_of) {
+  using P = typename K::Point;
+  const auto less = [](const P& u, const P& w) { return compare_xy<K>(u, w) == Sign::negative; };
+  const auto length = [](const PointRun<P>& r) { return (r.end - r.pos) * r.step; };
+  const auto at = [](const PointRun<P>& r, int i) -> const P& { return r.ring[r.pos + i * r.step]; };
+  std::vector<P> samples;
+  for (const auto& r : runs) {
+    for (int i = 0; i < length(r); i += 512) samples.push_back(at(r, i));
+  }
+  const auto middle = samples.begin() + static_cast<std::ptrdiff_t>(samples.size() / 2);
+  std::nth_element(samples.begin(), middle, samples.end(), less);
+  const P pivot = *middle;
+  std::vector<PointRun<P>> lower, upper;
+  int lower_count = 0;
+  for (const auto& r : runs) {
+    // The run's first c points (in its reading order) are below the pivot.
+    int lo = 0, hi = length(r);
+    while (lo < hi) {
+      const int mid = lo + (hi - lo) / 2;
+      if (less(at(r, mid), pivot)) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
+    const int cut = r.pos + lo * r.step;
+    if (lo > 0) lower.push_back({r.key, r.ring, r.ring_ref, r.pos, cut, r.step});
+    if (lo < length(r)) upper.push_back({r.ring[cut], r.ring, r.ring_ref, cut, r.end, r.step});
+    lower_count += lo;
+  }
+  const std::vector<PointRun<P>> upper_start = upper;  // merge_runs moves the runs along
+  std::size_t all = 0;
+  for (const auto& r : runs) all += static_cast<std::size_t>(length(r));
+  points.reserve(points.size() + all);
+  x_rank.reserve(x_rank.size() + all);
+  std::vector<P> upper_points;
+  std::vector<int> upper_ranks;
+  run_tasks(2, 2, [&](std::size_t half) {
+    if (half == 0) {
+      merge_runs<K>(lower, points, x_rank, id_of);
+    } else {
+      merge_runs<K>(upper, upper_points, upper_ranks, id_of, lower_count);
+    }
+  });
+  if (upper_points.empty()) return;
+  const int repeated = lower_count - static_cast<int>(points.size());
+  if (repeated != 0) {
+    for (const auto& r : upper_start) {
+      for (int i = 0; i < length(r); ++i) id_of[r.ring_ref + r.pos + i * r.step] -= repeated;
+    }
+  }
+  const int rank_base =
+      points.empty() ? 0 : x_rank.back() + (K::compare_x(points.back(), upper_points.front()) != Sign::zero ? 1 : 0);
+  points.insert(points.end(), upper_points.begin(), upper_points.end());
+  const std::size_t first = x_rank.size();
+  x_rank.resize(first + upper_ranks.size());
+  for (std::size_t i = 0; i < upper_ranks.size(); ++i) x_rank[first + i] = rank_base + upper_ranks[i];
+}
+
 // Numbers the distinct input points of A and B in lexicographic order by merging the rings'
 // monotone runs, which are few on smooth or convex rings (a ring has at least two): each
 // point then costs about log2(runs) comparisons instead of a sort's log2(n). Fills `points`
 // (distinct, sorted), their x-ranks and id_of (input number, counted polygon after polygon
 // and ring after ring -> id). Returns false, having done nothing, when there are more than
-// `max_runs` runs. (Merging the points below a median key and the others on two threads
-// was tried twice: slower whenever the second core is busy, and little faster when it is
-// not; appending the upper half and moving its ids up costs what the second thread saves.)
+// `max_runs` runs. With two threads or more and enough points, the points below a pivot
+// (about the median) and the others are merged on two threads (merge_runs_in_halves).
 template <Kernel K>
 bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point>*, 2>& in, std::size_t max_runs,
-                           std::vector<typename K::Point>& points, std::vector<int>& x_rank, std::vector<int>& id_of) {
+                           std::vector<typename K::Point>& points, std::vector<int>& x_rank, std::vector<int>& id_of,
+                           unsigned threads = 1) {
   using P = typename K::Point;
   const auto less = [](const P& u, const P& w) { return compare_xy<K>(u, w) == Sign::negative; };
   std::vector<PointRun<P>> runs;
@@ -422,7 +495,11 @@ bool number_points_by_runs(const std::array<const BasicPolygon<typename K::Point
       ref += n;
     }
   }
-  merge_runs<K>(runs, points, x_rank, id_of);
+  if (threads_for(static_cast<std::size_t>(ref), threads) >= 2 && ref >= kHalvesFrom) {
+    merge_runs_in_halves<K>(runs, points, x_rank, id_of);
+  } else {
+    merge_runs<K>(runs, points, x_rank, id_of);
+  }
   return true;
 }
 
@@ -437,7 +514,7 @@ void number_points(const std::array<const BasicPolygon<typename K::Point>*, 2>& 
   // otherwise the points themselves (not indices into the rings) are sorted. The second
   // member numbers the vertices polygon after polygon, ring after ring.
   constexpr std::size_t max_runs = 32;
-  if (!number_points_by_runs<K>(in, max_runs, points, x_rank, id_of)) {
+  if (!number_points_by_runs<K>(in, max_runs, points, x_rank, id_of, threads)) {
     std::vector<std::pair<typename K::Point, int>> sorted;
     sorted.reserve(total);
     for (const auto* poly : in) {

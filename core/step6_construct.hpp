@@ -89,16 +89,28 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
     return best;
   };
 
-  std::vector<int> position(static_cast<std::size_t>(arr.num_vertices()), -1);  // vertex -> index in the current path
+  // vertex -> its index in the current path, if path_vertices there still holds it: entries
+  // left behind by emitted cycles and earlier walks fail that test, so none is ever reset.
+  std::vector<int> position(static_cast<std::size_t>(arr.num_vertices()), -1);
   std::vector<int> path_vertices;
   std::vector<Direction> path_dirs;
+  const auto on_path = [&](int v) {
+    const int at = position[v];
+    return at >= 0 && static_cast<std::size_t>(at) < path_vertices.size() && path_vertices[at] == v ? at : -1;
+  };
   const auto emit = [&](std::size_t from) {
     ResultCycle cycle;
-    cycle.vertices.assign(path_vertices.begin() + static_cast<std::ptrdiff_t>(from), path_vertices.end());
-    cycle.directions.assign(path_dirs.begin() + static_cast<std::ptrdiff_t>(from), path_dirs.end());
-    for (std::size_t k = from + 1; k < path_vertices.size(); ++k) position[path_vertices[k]] = -1;
-    path_vertices.resize(from + 1);
-    path_dirs.resize(from);
+    if (from == 0) {  // the whole path, moved (one cycle of 10^6 vertices on blob 1e6)
+      cycle.vertices = std::move(path_vertices);
+      cycle.directions = std::move(path_dirs);
+      path_vertices.assign({cycle.vertices[0]});
+      path_dirs.clear();
+    } else {
+      cycle.vertices.assign(path_vertices.begin() + static_cast<std::ptrdiff_t>(from), path_vertices.end());
+      cycle.directions.assign(path_dirs.begin() + static_cast<std::ptrdiff_t>(from), path_dirs.end());
+      path_vertices.resize(from + 1);
+      path_dirs.resize(from);
+    }
     if (cycle.vertices.size() >= 3) {
       const int turns = detail::turning_number(order, cycle.directions);
       if (turns != 1 && turns != -1) {
@@ -142,14 +154,13 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
       }
       next->alive = false;
       append_entry(*next);
-      if (position[next->to] >= 0) {
-        emit(static_cast<std::size_t>(position[next->to]));
+      if (const int at = on_path(next->to); at >= 0) {
+        emit(static_cast<std::size_t>(at));
       } else {
         position[next->to] = static_cast<int>(path_vertices.size());
         path_vertices.push_back(next->to);
       }
     }
-    position[path_vertices[0]] = -1;
   });
   return out;
 }

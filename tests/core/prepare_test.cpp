@@ -175,6 +175,67 @@ TEST(Prepare, NumberingByMergedRunsEqualsNumberingBySort) {
   }
 }
 
+// Merging the runs in two halves on two threads (enough points for it) gives what one
+// thread gives, bit for bit: the points, their x-ranks and every vertex's id. Coordinates
+// from a small grid repeat points in both halves (the upper half's ids are then moved down)
+// and put equal x on both sides of the cut; from a wide range nothing repeats (its ids are
+// right as first written). Zeros of both signs throughout.
+TEST(Prepare, NumberingByRunsOnTwoThreadsEqualsOneThread) {
+  using K = ExactKernel;
+  for (const int spread : {40, 300, 1 << 30}) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(spread));
+    std::uniform_int_distribution<int> coord(-spread, spread);
+    std::array<Polygon, 2> poly;
+    std::vector<Point> flat;
+    for (auto& p : poly) {
+      for (int r = 0; r < 12; ++r) {
+        Ring ring;
+        for (int k = 0; k < 6000 + r * 200; ++k) {
+          const double x = coord(rng) / 4.0;
+          const double y = coord(rng);
+          ring.push_back({x == 0 && (rng() & 1) ? -0.0 : x, y == 0 && (rng() & 1) ? -0.0 : y});
+        }
+        // One run each: sorted, without repeats in a row (a descending run is strict).
+        std::sort(ring.begin(), ring.end(), [](const Point& u, const Point& w) { return compare_xy<K>(u, w) == Sign::negative; });
+        ring.erase(std::unique(ring.begin(), ring.end(), [](const Point& u, const Point& w) { return compare_xy<K>(u, w) == Sign::zero; }),
+                   ring.end());
+        if (rng() & 1) std::reverse(ring.begin(), ring.end());
+        flat.insert(flat.end(), ring.begin(), ring.end());
+        p.rings.push_back(std::move(ring));
+      }
+    }
+    ASSERT_GE(flat.size(), static_cast<std::size_t>(detail::kHalvesFrom));
+    const std::array<const Polygon*, 2> in{&poly[0], &poly[1]};
+    std::array<std::vector<Point>, 2> points;
+    std::array<std::vector<int>, 2> x_rank;
+    std::array<std::vector<int>, 2> id_of{std::vector<int>(flat.size(), -1), std::vector<int>(flat.size(), -1)};
+    for (unsigned t = 0; t < 2; ++t) {
+      ASSERT_TRUE(detail::number_points_by_runs<K>(in, 1000, points[t], x_rank[t], id_of[t], t + 1));
+    }
+    ASSERT_EQ(points[0].size(), points[1].size()) << spread;
+    for (std::size_t i = 0; i < points[0].size(); ++i) {
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(points[0][i].x), std::bit_cast<std::uint64_t>(points[1][i].x)) << spread << " " << i;
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(points[0][i].y), std::bit_cast<std::uint64_t>(points[1][i].y)) << spread << " " << i;
+    }
+    EXPECT_EQ(x_rank[0], x_rank[1]) << spread;
+    EXPECT_EQ(id_of[0], id_of[1]) << spread;
+    // And both are right: sorted, distinct, x-ranks counted, every vertex on its point.
+    for (std::size_t i = 1; i < points[1].size(); ++i) {
+      ASSERT_EQ(compare_xy<K>(points[1][i - 1], points[1][i]), Sign::negative) << spread << " " << i;
+      ASSERT_EQ(x_rank[1][i], x_rank[1][i - 1] + (points[1][i - 1].x != points[1][i].x ? 1 : 0)) << spread << " " << i;
+    }
+    for (std::size_t k = 0; k < flat.size(); ++k) {
+      ASSERT_EQ(compare_xy<K>(points[1][id_of[1][k]], flat[k]), Sign::zero) << spread << " " << k;
+    }
+    if (spread == 40) {
+      EXPECT_LT(points[1].size(), flat.size() / 2);  // the small grid repeats most points across rings
+    }
+    if (spread == (1 << 30)) {
+      EXPECT_GT(points[1].size(), flat.size() - 100);  // the wide range almost none
+    }
+  }
+}
+
 // Many small rings (too many runs to merge: the points are sorted, on two threads when there
 // are enough), the same corners repeated with zeros of both signs: the same ids, x-ranks and
 // points, bit for bit, on one thread and on two, and each point kept with +0 wherever one of
