@@ -7,6 +7,7 @@
 // points are never located by coordinates.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -63,12 +64,14 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
     // The left side of `next` is reached from the left side of f by sweeping clockwise
     // from `back` to `ahead`, i.e. through the counterclockwise sector ahead -> back.
     int delta = 0;
+    std::optional<typename DirectionOrder<K>::Sector> sector;  // made at the first end tested
     for (const FragmentEnd& end : x_ends.at(f.to)) {
       // A fragment along `back` or `ahead` themselves lies on the sector's boundary, never
       // strictly inside: at the vertices of p's own ring no predicate is evaluated.
       const Direction dir = end.dir();
       if (dir == back || dir == ahead) continue;
-      if (order.is_in_ccw_sector(ahead, back, dir)) delta += end.sign();
+      if (!sector) sector.emplace(order, ahead, back);
+      if (sector->contains(dir)) delta += end.sign();
     }
     left -= delta;
   }

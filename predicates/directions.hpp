@@ -52,8 +52,11 @@ class DirectionOrder {
     // The same pair of points: no predicate needed (the common case of a fragment's own ray,
     // where proving a zero determinant would take the slowest exact stage).
     if (a.from == b.from && a.to == b.to) return Sign::zero;
-    const bool ua = is_upper(a);
-    const bool ub = is_upper(b);
+    return compare_known(a, is_upper(a), b, is_upper(b));
+  }
+  // compare, given whether a and b lie in the upper half.
+  Sign compare_known(Direction a, bool ua, Direction b, bool ub) const {
+    if (a.from == b.from && a.to == b.to) return Sign::zero;
     if (ua != ub) return ua ? Sign::negative : Sign::positive;
     return -K::orient_vectors(points_[a.from], points_[a.to], points_[b.from], points_[b.to]);
   }
@@ -63,6 +66,29 @@ class DirectionOrder {
   bool is_in_ccw_sector(Direction first, Direction last, Direction d) const {
     return is_in_ccw_sweep(first, last, d, [this](Direction u, Direction v) { return compare(u, v); });
   }
+
+  // The sweep from `first` to `last` for testing many directions: the half-planes of its
+  // ends and their order, found once. contains(d) == is_in_ccw_sector(first, last, d).
+  class Sector {
+   public:
+    Sector(const DirectionOrder& order, Direction first, Direction last)
+        : order_(&order), first_(first), last_(last), first_upper_(order.is_upper(first)),
+          last_upper_(order.is_upper(last)), first_last_(order.compare(first, last)) {}
+    bool contains(Direction d) const {
+      const bool d_upper = order_->is_upper(d);
+      const Sign fd = order_->compare_known(first_, first_upper_, d, d_upper);
+      if (first_last_ == Sign::zero) return fd != Sign::zero;
+      if (first_last_ == Sign::negative && fd != Sign::negative) return false;
+      if (first_last_ == Sign::positive && fd == Sign::negative) return true;
+      return order_->compare_known(d, d_upper, last_, last_upper_) == Sign::negative;
+    }
+
+   private:
+    const DirectionOrder* order_;
+    Direction first_, last_;
+    bool first_upper_, last_upper_;
+    Sign first_last_;
+  };
 
   // Signed turn from direction a to direction b, counted in whole crossings of angle 0:
   // +1 when the counterclockwise turn (less than pi) wraps past east, -1 for a clockwise
