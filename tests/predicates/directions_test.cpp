@@ -1,6 +1,7 @@
-// The project's one sector test (is_in_ccw_sweep, predicates/directions.hpp) through both of
-// its users, DirectionOrder over edge directions and the inclusion forest's is_in_sector over
-// vertices (crossings included), against angles compared in exact rationals here.
+// The project's one sector test (is_in_ccw_sweep, predicates/directions.hpp) through its
+// users, DirectionOrder over edge directions (per question and as a Sector made once) and
+// the inclusion forest's is_in_sector over vertices (crossings included), against angles
+// compared in exact rationals here.
 // [MK89 §4.3, Table 5] (angle rules, generalised)
 #include <gtest/gtest.h>
 #include <gmpxx.h>
@@ -61,6 +62,12 @@ TEST(Directions, TheSectorTestAgreesWithExactAnglesForEdgeDirectionsAndVertices)
                                             RationalKernel::point(p[1]), RationalKernel::point(p[2])};
     const DirectionOrder<RationalKernel> order(points);
     ASSERT_EQ(order.is_in_ccw_sector({0, 1}, {0, 2}, {0, 3}), want) << iter;
+    // The sector made once (step 4's), with the test direction also as the same pair of
+    // points as either end (never strictly inside).
+    const DirectionOrder<RationalKernel>::Sector sector(order, {0, 1}, {0, 2});
+    ASSERT_EQ(sector.contains({0, 3}), want) << iter;
+    ASSERT_FALSE(sector.contains({0, 1})) << iter;
+    ASSERT_EQ(sector.contains({0, 2}), order.is_in_ccw_sector({0, 1}, {0, 2}, {0, 2})) << iter;
     // is_in_sector: vertices, here with c a crossing point of two segments through it
     // (exact, implicit), wherever the directions from c are not parallel.
     const Point c2{2 * c.x, 2 * c.y};
