@@ -26,14 +26,18 @@ struct Direction {
 // angle, counterclockwise from any fixed reference direction (negative: u comes first;
 // zero: the same direction), which makes the sweep an interval of that order or the
 // complement of one.
+// `first_last` is compare(first, last), for callers that test many d against one sweep.
+template <class D, class Compare>
+bool is_in_ccw_sweep(Sign first_last, const D& first, const D& last, const D& d, Compare&& compare) {
+  const Sign fd = compare(first, d);
+  if (first_last == Sign::zero) return fd != Sign::zero;
+  if (first_last == Sign::negative && fd != Sign::negative) return false;
+  if (first_last == Sign::positive && fd == Sign::negative) return true;
+  return compare(d, last) == Sign::negative;
+}
 template <class D, class Compare>
 bool is_in_ccw_sweep(const D& first, const D& last, const D& d, Compare&& compare) {
-  const Sign fl = compare(first, last);
-  const Sign fd = compare(first, d);
-  if (fl == Sign::zero) return fd != Sign::zero;
-  const Sign dl = compare(d, last);
-  if (fl == Sign::negative) return fd == Sign::negative && dl == Sign::negative;
-  return fd == Sign::negative || dl == Sign::negative;
+  return is_in_ccw_sweep(compare(first, last), first, last, d, compare);
 }
 
 template <Kernel K>
@@ -76,11 +80,9 @@ class DirectionOrder {
           last_upper_(order.is_upper(last)), first_last_(order.compare(first, last)) {}
     bool contains(Direction d) const {
       const bool d_upper = order_->is_upper(d);
-      const Sign fd = order_->compare_known(first_, first_upper_, d, d_upper);
-      if (first_last_ == Sign::zero) return fd != Sign::zero;
-      if (first_last_ == Sign::negative && fd != Sign::negative) return false;
-      if (first_last_ == Sign::positive && fd == Sign::negative) return true;
-      return order_->compare_known(d, d_upper, last_, last_upper_) == Sign::negative;
+      const auto upper = [&](Direction u) { return u == first_ ? first_upper_ : (u == last_ ? last_upper_ : d_upper); };
+      return is_in_ccw_sweep(first_last_, first_, last_, d,
+                             [&](Direction u, Direction v) { return order_->compare_known(u, upper(u), v, upper(v)); });
     }
 
    private:
