@@ -1,4 +1,7 @@
-// Sorting by a kernel's predicates. An exact kernel's comparisons are consistent and
+// Sorting for the core: by a kernel's predicates (sort_by_predicates), and points of doubles
+// by their bits (sort_points_lexicographic, the point numbering's radix sort).
+//
+// By a kernel's predicates: an exact kernel's comparisons are consistent and
 // std::sort serves; an inexact kernel's may not be (a naive kernel's products overflow to
 // infinity or NaN near 1e300, rounded crossings compare inconsistently), and std::sort's
 // unguarded insertion then runs past the range (a crash seen at 1e300 with kernel `double`).

@@ -25,7 +25,6 @@ inline bool is_blank(std::string_view text) {
   return text.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos;
 }
 
-
 inline std::string json_type_name(const Json& j) {
   switch (j.type()) {
     case Json::value_t::null: return "null";
@@ -109,25 +108,17 @@ class CheckedDom : public nlohmann::detail::json_sax_dom_parser<Json> {
     return Base::end_array();
   }
   bool key(Json::string_t& name) {
-    ObjectFrame& object = objects_.back();
-    if (std::find(object.names.begin(), object.names.end(), name) != object.names.end()) {
-      repeated_->push_back({key_path(path(), name), name});
-    } else {
-      object.names.push_back(name);
-    }
-    object.key = name;
+    std::vector<std::string>& names = objects_.back();
+    if (std::find(names.begin(), names.end(), name) != names.end()) repeated_->push_back({key_path(path(), name), name});
+    names.push_back(name);
     return Base::key(name);
   }
 
  private:
   // Per open container, innermost last: an array's count of values so far, or kObject.
-  // Objects also have an ObjectFrame of their own (arrays, which may nest a million deep,
-  // cost one word each).
+  // Objects also have their member names so far, the current one last (arrays, which may
+  // nest a million deep, cost one word each).
   static constexpr std::size_t kObject = static_cast<std::size_t>(-1);
-  struct ObjectFrame {
-    std::string key;                 // the current member's name
-    std::vector<std::string> names;  // the member names so far
-  };
   // Counts a value in its array (its index is then the count less one).
   bool value_in_parent() {
     if (!frames_.empty() && frames_.back() != kObject) ++frames_.back();
@@ -138,13 +129,13 @@ class CheckedDom : public nlohmann::detail::json_sax_dom_parser<Json> {
     std::string p;
     std::size_t object = 0;
     for (std::size_t i = 0; i + 1 < frames_.size(); ++i) {
-      p = frames_[i] == kObject ? key_path(p, objects_[object++].key) : index_path(p, frames_[i] - 1);
+      p = frames_[i] == kObject ? key_path(p, objects_[object++].back()) : index_path(p, frames_[i] - 1);
     }
     return p;
   }
 
   std::vector<std::size_t> frames_;
-  std::vector<ObjectFrame> objects_;
+  std::vector<std::vector<std::string>> objects_;
   std::vector<RepeatedMember>* repeated_;
 };
 
