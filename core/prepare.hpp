@@ -10,7 +10,6 @@
 #include <cmath>
 #include <memory>
 #include <numeric>
-#include <ranges>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -419,9 +418,16 @@ void merge_runs_in_halves(std::vector<PointRun<typename K::Point>>& runs, std::v
   std::vector<PointRun<P>> lower, upper;
   int lower_count = 0;
   for (const auto& r : runs) {
-    // The run's first lo points (in its reading order) are below the pivot.
-    const int lo = *std::ranges::partition_point(std::views::iota(0, length(r)),
-                                                 [&](int i) { return less(at(r, i), pivot); });
+    // The run's first c points (in its reading order) are below the pivot.
+    int lo = 0, hi = length(r);
+    while (lo < hi) {
+      const int mid = lo + (hi - lo) / 2;
+      if (less(at(r, mid), pivot)) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
     const int cut = r.pos + lo * r.step;
     if (lo > 0) lower.push_back({r.key, r.ring, r.ring_ref, r.pos, cut, r.step});
     if (lo < length(r)) upper.push_back({r.ring[cut], r.ring, r.ring_ref, cut, r.end, r.step});
