@@ -86,7 +86,7 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   hook(Step::prepared, arr);
   normalize_orientations(arr, opt.op, threads);  // step 1
   hook(Step::oriented, arr);
-  build_vertex_rings(arr);  // step 2
+  build_vertex_rings(arr, threads);  // step 2
   hook(Step::vertex_rings, arr);
   insert_intersections(arr, opt.pair_search, threads);  // step 3
   hook(Step::intersections, arr);
@@ -99,7 +99,7 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   // first, so that step 6's arrays reuse its memory instead of growing the heap.
   inc = Incidence();
   release_fragments(arr);
-  res.cycles = construct_result_polygons(arr, ef, opt.op, isolated_points);  // step 6
+  res.cycles = construct_result_polygons(arr, ef, opt.op, isolated_points, threads);  // step 6
   hook(Step::constructed, arr);
   // The unbounded face lies outside both polygons' FAR: in A's region when A is a hole.
   const PolygonType ta = arr.polygon[0].type;

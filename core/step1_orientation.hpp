@@ -87,9 +87,13 @@ inline LocatorQuery depth_query(const PreparedPolygon& poly, std::size_t c,
 // turns B against A where Table 1 says so.
 template <Kernel K>
 void normalize_orientations(Arrangement<K>& arr, Operation op, unsigned threads = 1) {
+  // The work: each cycle's orientation reads its vertices; nested cycles add a depth query.
   std::size_t work = 0;
-  for (const auto& poly : arr.polygon) work += poly.cycles.size() > 1 ? poly.cycles.size() : 0;
-  run_tasks(threads_for(4 * work, threads), 2, [&](std::size_t pi) {  // the polygons on two threads
+  for (const auto& poly : arr.polygon) {
+    for (const auto& cycle : poly.cycles) work += cycle.size();
+    work += poly.cycles.size() > 1 ? 4 * poly.cycles.size() : 0;
+  }
+  run_tasks(threads_for(work, threads), 2, [&](std::size_t pi) {  // the polygons on two threads
     PreparedPolygon& poly = arr.polygon[pi];
     // A polygon with one cycle has it at depth 0; only nested parts need the ray test.
     const bool single = poly.cycles.size() == 1;

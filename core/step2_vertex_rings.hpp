@@ -5,13 +5,20 @@
 #pragma once
 
 #include "core/arrangement.hpp"
+#include "core/parallel.hpp"
 
 namespace mk {
 
-// Lays out every cycle's edges in ring order; fragments follow in step 3.
+// Lays out every cycle's edges in ring order; fragments follow in step 3. The two polygons
+// on two threads when there are enough edges.
 template <Kernel K>
-void build_vertex_rings(Arrangement<K>& arr) {
-  for (auto& poly : arr.polygon) {
+void build_vertex_rings(Arrangement<K>& arr, unsigned threads = 1) {
+  std::size_t edges = 0;
+  for (const auto& poly : arr.polygon) {
+    for (const auto& cycle : poly.cycles) edges += cycle.size();
+  }
+  run_tasks(threads_for(edges, threads), 2, [&](std::size_t p) {
+    PreparedPolygon& poly = arr.polygon[p];
     poly.edges.clear();
     poly.cycle_first_edge.assign(1, 0);
     std::size_t total = 0;
@@ -31,7 +38,7 @@ void build_vertex_rings(Arrangement<K>& arr) {
       add(cycle.back(), cycle.front());
       poly.cycle_first_edge.push_back(static_cast<int>(poly.edges.size()));
     }
-  }
+  });
 }
 
 }  // namespace mk

@@ -14,6 +14,7 @@
 #include "core/arrangement.hpp"
 #include "core/edge_fragment_table.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/tables.hpp"
 #include "predicates/directions.hpp"
 
@@ -35,29 +36,46 @@ namespace detail {
 // (DirectionOrder::is_upper): within one half, compare(b, a) is -orient(b, a), the turn
 // itself, so wraps() is 0 there, and one half test per direction replaces most orientations.
 // Rounded predicates need not be antisymmetric: they take wraps() at every turn.
+// The turns after directions [first, last) of the n = dirs.size() (each with the next one,
+// the last with the first), a sum that parts of a long cycle make apart.
 template <Kernel K>
-int turning_number(const DirectionOrder<K>& order, const std::vector<Direction>& dirs) {
+int turns_after(const DirectionOrder<K>& order, const std::vector<Direction>& dirs, std::size_t first, std::size_t last) {
   int turns = 0;
   const std::size_t n = dirs.size();
+  if (first >= last) return 0;
   if constexpr (K::is_exact) {
-    if (n == 0) return 0;
-    const bool first_upper = order.is_upper(dirs[0]);
-    bool upper = first_upper;
-    for (std::size_t i = 0; i < n; ++i) {
-      const bool next_upper = i + 1 < n ? order.is_upper(dirs[i + 1]) : first_upper;
-      if (next_upper != upper) turns += order.wraps(dirs[i], dirs[(i + 1) % n]);
+    bool upper = order.is_upper(dirs[first]);
+    for (std::size_t i = first; i < last; ++i) {
+      const std::size_t next = i + 1 < n ? i + 1 : 0;
+      const bool next_upper = order.is_upper(dirs[next]);
+      if (next_upper != upper) turns += order.wraps(dirs[i], dirs[next]);
       upper = next_upper;
     }
   } else {
-    for (std::size_t i = 0; i < n; ++i) turns += order.wraps(dirs[i], dirs[(i + 1) % n]);
+    for (std::size_t i = first; i < last; ++i) turns += order.wraps(dirs[i], dirs[(i + 1) % n]);
   }
   return turns;
+}
+
+// The turning number of the whole sequence, a long one in parts on up to `threads` threads
+// (the same sum on any number: each part's turns are its own).
+template <Kernel K>
+int turning_number(const DirectionOrder<K>& order, const std::vector<Direction>& dirs, unsigned threads = 1) {
+  const std::size_t n = dirs.size();
+  const unsigned t = threads_for(n / 4, threads);
+  if (t < 2) return turns_after(order, dirs, 0, n);
+  const std::size_t parts = 4 * static_cast<std::size_t>(t);
+  std::vector<int> turns(parts, 0);
+  run_tasks(t, parts, [&](std::size_t i) { turns[i] = turns_after(order, dirs, n * i / parts, n * (i + 1) / parts); });
+  int sum = 0;
+  for (const int k : turns) sum += k;
+  return sum;
 }
 
 }  // namespace detail
 
 template <Kernel K, class Table>
-std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Table& ef, Operation op) {
+std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Table& ef, Operation op, unsigned threads = 1) {
   const DirectionOrder<K> order(arr.points);
   const PolygonType ta = arr.polygon[0].type;
   const PolygonType tb = arr.polygon[1].type;
@@ -112,7 +130,7 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
       path_dirs.resize(from);
     }
     if (cycle.vertices.size() >= 3) {
-      const int turns = detail::turning_number(order, cycle.directions);
+      const int turns = detail::turning_number(order, cycle.directions, threads);
       if (turns != 1 && turns != -1) {
         throw KernelFailure(std::string("kernel ") + std::string(K::name) +
                             ": a result cycle is not a simple polygon (turning number " + std::to_string(turns) + ")");
@@ -169,8 +187,8 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
 // step 5 as one-sided result polygons.
 template <Kernel K, class Table>
 std::vector<ResultCycle> construct_result_polygons(const Arrangement<K>& arr, Table& ef, Operation op,
-                                                   const std::vector<int>& isolated_points) {
-  std::vector<ResultCycle> out = construct_result_cycles(arr, ef, op);
+                                                   const std::vector<int>& isolated_points, unsigned threads = 1) {
+  std::vector<ResultCycle> out = construct_result_cycles(arr, ef, op, threads);
   for (const int v : isolated_points) out.push_back({{v}, {}, PolygonType::island, true});
   return out;
 }
