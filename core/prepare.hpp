@@ -598,6 +598,15 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
       }
     }
   });
+  // Whether the rings' vertices are distinct points, all of them: distinct points are never
+  // more than the vertices kept, and as many only then.
+  const auto ring_ids = [&](std::size_t p) {
+    std::size_t n = 0;
+    for (const auto& ring : rings[p]) n += ring.ids.size();
+    return n;
+  };
+  const std::array<std::size_t, 2> kept{ring_ids(0), ring_ids(1)};
+  const bool distinct = arr.points.size() == kept[0] + kept[1];
   // Vertex-complete: exact kernels search both polygons at once and keep what step 3 would
   // find (make_both_vertex_complete); the others (whose crossings may fail, which step 3
   // reports after these errors) search each polygon on its own.
@@ -608,11 +617,22 @@ Arrangement<K> prepare(const BasicPolygon<typename K::Point>& a, const BasicPoly
       detail::make_vertex_complete<K>(arr.points, arr.x_rank, rings[p], p == 0 ? "A" : "B", search, per_polygon);
     });
   }
-  // Split into cycles, each polygon with its own marks per point.
+  // Split into cycles, each polygon with its own marks per point. A polygon whose rings hold
+  // distinct points, none inserted by vertex-completeness, has its rings as cycles already.
   std::array<bool, 2> whole{true, true};  // every ring of two or more points one cycle as it was
   run_tasks(threads_for(total, threads), 2, [&](std::size_t p) {
     PreparedPolygon& out = arr.polygon[p];
     out.type = in[p]->type;
+    if (distinct && ring_ids(p) == kept[p]) {
+      for (std::size_t r = 0; r < rings[p].size(); ++r) {
+        detail::IdRing& ring = rings[p][r];
+        if (ring.ids.size() == 1) out.point_cycles.push_back(ring.ids[0]);
+        if (ring.ids.size() < 2) continue;
+        out.origins.push_back({static_cast<int>(r), ring.input_index[0]});
+        out.cycles.push_back(std::move(ring.ids));
+      }
+      return;
+    }
     std::vector<int> where(arr.points.size(), -1);
     for (std::size_t r = 0; r < rings[p].size(); ++r) {
       if (rings[p][r].ids.empty()) continue;

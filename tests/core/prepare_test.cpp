@@ -105,6 +105,51 @@ TEST(Prepare, SeveralPointsOnOneEdgeAreInsertedInOrderAlongIt) {
   EXPECT_TRUE(follows(*outer, id(1, 4), id(0, 4)));
 }
 
+// A ring meeting itself is split into cycles at the point it passes twice, whether that
+// point is an input vertex given twice or a vertex touching the ring's own edge (inserted
+// there; every input point distinct). Rings of distinct points, nothing inserted, stay as
+// they are.
+template <class K>
+void check_rings_meeting_themselves() {
+  const Polygon a{{
+                      {{0, 0}, {4, 0}, {4, 4}, {3, 4}, {2, 0}, {1, 4}, {0, 4}},  // touches its bottom edge
+                  },
+                  PolygonType::island};
+  const Polygon b{{{{10, 0}, {12, 2}, {14, 0}, {14, 4}, {12, 2}, {10, 4}}}, PolygonType::island};  // a figure 8
+  const Polygon c{{{{20, 0}, {24, 0}, {24, 4}, {20, 4}}, {{21, 1}, {21, 3}, {23, 3}}}, PolygonType::island};
+  {
+    const Arrangement<K> arr = prepare<K>(to_kernel_polygon<K>(a), to_kernel_polygon<K>(c));
+    const auto id = [&](double x, double y) { return id_of(arr, x, y); };
+    const PreparedPolygon& p = arr.polygon[0];
+    ASSERT_EQ(p.cycles.size(), 2u);
+    const auto* right = cycle_with(p, {id(2, 0), id(4, 0), id(4, 4), id(3, 4)});
+    const auto* left = cycle_with(p, {id(0, 0), id(2, 0), id(1, 4), id(0, 4)});
+    ASSERT_NE(right, nullptr);
+    ASSERT_NE(left, nullptr);
+    EXPECT_EQ(right->size(), 4u);
+    EXPECT_EQ(left->size(), 4u);
+    // c's rings hold distinct points and nothing touches them: its cycles are its rings.
+    const PreparedPolygon& q = arr.polygon[1];
+    ASSERT_EQ(q.cycles.size(), 2u);
+    EXPECT_EQ(q.cycles[0].size(), 4u);
+    EXPECT_EQ(q.cycles[1].size(), 3u);
+    EXPECT_EQ(q.origins[1].ring, 1);
+  }
+  {
+    const Arrangement<K> arr = prepare<K>(to_kernel_polygon<K>(c), to_kernel_polygon<K>(b));
+    const auto id = [&](double x, double y) { return id_of(arr, x, y); };
+    const PreparedPolygon& p = arr.polygon[1];
+    ASSERT_EQ(p.cycles.size(), 2u);
+    EXPECT_NE(cycle_with(p, {id(12, 2), id(14, 0), id(14, 4)}), nullptr);
+    EXPECT_NE(cycle_with(p, {id(10, 0), id(12, 2), id(10, 4)}), nullptr);
+  }
+}
+
+TEST(Prepare, RingsMeetingThemselvesAreSplitAndOthersKept) {
+  check_rings_meeting_themselves<RationalKernel>();
+  check_rings_meeting_themselves<ExactKernel>();
+}
+
 // The numbering by merged monotone runs equals numbering by a plain sort: the same distinct
 // points in lexicographic order, and every input vertex mapped to its point. Inputs mix
 // ascending and descending runs, repeated points (within a ring, across rings and across
