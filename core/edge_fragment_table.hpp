@@ -157,15 +157,20 @@ class HashEdgeTable {
     append(link, e, static_cast<int>(runs_.size()) - 1);
   }
 
-  // An entry's inner vertices: {first, count} (count 0 for one fragment), each read with
-  // inner_vertex and the direction leaving it with inner_direction.
+  // An entry's inner vertices: {first, count} (count 0 for one fragment), for append_inner.
   std::pair<std::size_t, std::size_t> inner_range(const EfEntry& e) const {
     const int r = run_[static_cast<std::size_t>(&e - entries_.data())];
     return r < 0 ? std::pair<std::size_t, std::size_t>{0, 0} : runs_[static_cast<std::size_t>(r)];
   }
-  int inner_vertex(std::size_t k) const { return inner_[k]; }
   std::size_t num_runs() const { return runs_.size(); }
-  Direction inner_direction(std::size_t k) const { return {inner_dirs_[k].from, inner_dirs_[k].to}; }
+  // Appends inner vertices [first, first + count) to `vertices` and their leaving directions
+  // to `dirs`, in one copy each (step 6 moves runs of 10^5 vertices).
+  void append_inner(std::size_t first, std::size_t count, std::vector<int>& vertices, std::vector<Direction>& dirs) const {
+    vertices.insert(vertices.end(), inner_.get() + first, inner_.get() + first + count);
+    const std::size_t at = dirs.size();
+    dirs.resize(at + count);
+    for (std::size_t k = 0; k < count; ++k) dirs[at + k] = {inner_dirs_[first + k].from, inner_dirs_[first + k].to};
+  }
 
   template <class F>
   void for_each_from(int v, F&& f) {

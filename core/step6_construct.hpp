@@ -147,10 +147,7 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
     path_dirs.push_back(e.dir);
     if constexpr (std::is_same_v<Table, HashEdgeTable>) {
       const auto [first, count] = ef.inner_range(e);
-      for (std::size_t k = first; k < first + count; ++k) {
-        path_vertices.push_back(ef.inner_vertex(k));
-        path_dirs.push_back(ef.inner_direction(k));
-      }
+      ef.append_inner(first, count, path_vertices, path_dirs);
     }
   };
   // Every walk starts from the first fragment still unused, in EF's insertion order
