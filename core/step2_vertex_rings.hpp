@@ -4,6 +4,9 @@
 // does here by point-in-polygon tests, is done in step 4 by walking the rings [MK89 §4.3].
 #pragma once
 
+#include <array>
+#include <cstddef>
+
 #include "core/arrangement.hpp"
 #include "core/parallel.hpp"
 
@@ -13,17 +16,15 @@ namespace mk {
 // on two threads when there are enough edges.
 template <Kernel K>
 void build_vertex_rings(Arrangement<K>& arr, unsigned threads = 1) {
-  std::size_t edges = 0;
-  for (const auto& poly : arr.polygon) {
-    for (const auto& cycle : poly.cycles) edges += cycle.size();
+  std::array<std::size_t, 2> total{0, 0};  // edges per polygon: one per cycle vertex
+  for (std::size_t p = 0; p < 2; ++p) {
+    for (const auto& cycle : arr.polygon[p].cycles) total[p] += cycle.size();
   }
-  run_tasks(threads_for(edges, threads), 2, [&](std::size_t p) {
+  run_tasks(threads_for(total[0] + total[1], threads), 2, [&](std::size_t p) {
     PreparedPolygon& poly = arr.polygon[p];
     poly.edges.clear();
     poly.cycle_first_edge.assign(1, 0);
-    std::size_t total = 0;
-    for (const auto& cycle : poly.cycles) total += cycle.size();
-    poly.edges.reserve(total);
+    poly.edges.reserve(total[p]);
     poly.cycle_first_edge.reserve(poly.cycles.size() + 1);
     for (int c = 0; c < static_cast<int>(poly.cycles.size()); ++c) {
       const auto& cycle = poly.cycles[c];

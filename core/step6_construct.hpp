@@ -43,16 +43,16 @@ int turns_after(const DirectionOrder<K>& order, const std::vector<Direction>& di
   int turns = 0;
   const std::size_t n = dirs.size();
   if (first >= last) return 0;
-  if constexpr (K::is_exact) {
-    bool upper = order.is_upper(dirs[first]);
-    for (std::size_t i = first; i < last; ++i) {
-      const std::size_t next = i + 1 < n ? i + 1 : 0;
+  [[maybe_unused]] bool upper = K::is_exact && order.is_upper(dirs[first]);
+  for (std::size_t i = first; i < last; ++i) {
+    const std::size_t next = i + 1 < n ? i + 1 : 0;
+    if constexpr (K::is_exact) {
       const bool next_upper = order.is_upper(dirs[next]);
       if (next_upper != upper) turns += order.wraps(dirs[i], dirs[next]);
       upper = next_upper;
+    } else {
+      turns += order.wraps(dirs[i], dirs[next]);
     }
-  } else {
-    for (std::size_t i = first; i < last; ++i) turns += order.wraps(dirs[i], dirs[(i + 1) % n]);
   }
   return turns;
 }

@@ -77,7 +77,8 @@ class DirectionOrder {
    public:
     Sector(const DirectionOrder& order, Direction first, Direction last)
         : order_(&order), first_(first), last_(last), first_upper_(order.is_upper(first)),
-          last_upper_(order.is_upper(last)), first_last_(order.compare(first, last)) {}
+          last_upper_(order.is_upper(last)),
+          first_last_(order.compare_known(first, first_upper_, last, last_upper_)) {}
     bool contains(Direction d) const {
       const bool d_upper = order_->is_upper(d);
       const auto upper = [&](Direction u) { return u == first_ ? first_upper_ : (u == last_ ? last_upper_ : d_upper); };
