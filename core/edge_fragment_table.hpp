@@ -172,6 +172,20 @@ class HashEdgeTable {
     for (std::size_t k = 0; k < count; ++k) dirs[at + k] = {inner_dirs_[first + k].from, inner_dirs_[first + k].to};
   }
 
+  // Entries in insertion order, dead ones included, for a walk made apart from the table.
+  std::size_t size() const { return entries_.size(); }
+  const EfEntry& entry(std::size_t i) const { return entries_[i]; }
+  // The one live entry from v, or -1 when there are none or several.
+  int only_from(int v) const {
+    int only = -1;
+    for (int i = head_[static_cast<std::size_t>(v)]; i >= 0; i = next_[static_cast<std::size_t>(i)]) {
+      if (!entries_[static_cast<std::size_t>(i)].alive) continue;
+      if (only >= 0) return -1;
+      only = i;
+    }
+    return only;
+  }
+
   template <class F>
   void for_each_from(int v, F&& f) {
     for (int i = head_[static_cast<std::size_t>(v)]; i >= 0; i = next_[static_cast<std::size_t>(i)]) {

@@ -6,6 +6,8 @@
 // turning towards the region, so cycles touch but never cross at shared vertices.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
@@ -72,6 +74,95 @@ int turning_number(const DirectionOrder<K>& order, const std::vector<Direction>&
   return sum;
 }
 
+// A traced cycle's orientation and type from its turning number (3+ vertices).
+template <Kernel K>
+void set_orientation(ResultCycle& cycle, int turns, PolygonType ccw_type) {
+  if (turns != 1 && turns != -1) {
+    throw KernelFailure(std::string("kernel ") + std::string(K::name) +
+                        ": a result cycle is not a simple polygon (turning number " + std::to_string(turns) + ")");
+  }
+  cycle.counterclockwise = turns == 1;
+  cycle.type = cycle.counterclockwise ? ccw_type : opposite(ccw_type);
+}
+
+// Step 6 when no walk has a choice: every live entry of EF leads to a vertex that exactly
+// one live entry leaves, and no two lead to the same. The walks of construct_result_cycles
+// are then the cycles of that successor map whatever order they are made in, each from its
+// first entry in insertion order, where the walk starts it. So the successors are found on
+// the threads, the cycles traced in one pass on one thread (their order), and each cycle's
+// vertices copied out and its turning number found on the threads: the same cycles, in the
+// same order, as the walk makes (a grid of 10^5 squares: 10^5 cycles of 4). False, with
+// `out` empty and EF untouched, when some vertex has a choice or none: the walk then
+// decides, or reports the failure. A cycle from a run of EF gets its inner vertices.
+template <Kernel K>
+bool forced_cycles(const DirectionOrder<K>& order, const HashEdgeTable& ef, PolygonType ccw_type, unsigned threads,
+                   std::vector<ResultCycle>& out) {
+  const std::size_t n = ef.size();
+  const auto at = [](int i) { return static_cast<std::size_t>(i); };
+  std::vector<int> next(n);  // per live entry: the live entry after it; -1 for dead ones
+  std::atomic<bool> forced{true};
+  run_blocks(threads, n, 8 * static_cast<std::size_t>(threads), [&](std::size_t first, std::size_t last) {
+    bool ok = true;
+    for (std::size_t i = first; i < last; ++i) {
+      const EfEntry& e = ef.entry(i);
+      next[i] = e.alive ? ef.only_from(e.to) : -1;
+      ok = ok && (!e.alive || (next[i] >= 0 && e.from != e.to));
+    }
+    if (!ok) forced = false;
+  });
+  if (!forced) return false;
+  struct Traced {
+    int first;             // its first entry in insertion order
+    std::size_t vertices;  // with the runs' inner vertices
+  };
+  std::vector<Traced> traced;
+  {
+    std::vector<std::uint8_t> seen(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (next[i] < 0 || seen[i]) continue;
+      std::size_t vertices = 0;
+      std::size_t j = i;
+      do {
+        seen[j] = 1;
+        vertices += 1 + ef.inner_range(ef.entry(j)).second;
+        j = at(next[j]);
+      } while (j != i && !seen[j]);
+      if (j != i) return false;  // two entries lead to one vertex: a walk does not close there
+      traced.push_back({static_cast<int>(i), vertices});
+    }
+  }
+  std::vector<ResultCycle> cycles(traced.size());
+  std::vector<int> turns(traced.size(), 0);
+  const auto is_long = [&](std::size_t c) { return traced[c].vertices >= kParallelWork; };
+  run_blocks(threads, traced.size(), 8 * static_cast<std::size_t>(threads), [&](std::size_t first, std::size_t last) {
+    for (std::size_t c = first; c < last; ++c) {
+      ResultCycle& cycle = cycles[c];
+      cycle.vertices.reserve(traced[c].vertices);
+      cycle.directions.reserve(traced[c].vertices);
+      const std::size_t start = at(traced[c].first);
+      std::size_t j = start;
+      do {
+        const EfEntry& e = ef.entry(j);
+        cycle.vertices.push_back(e.from);
+        cycle.directions.push_back(e.dir);
+        const auto [inner, count] = ef.inner_range(e);
+        ef.append_inner(inner, count, cycle.vertices, cycle.directions);
+        j = at(next[j]);
+      } while (j != start);
+      if (cycle.vertices.size() >= 3 && !is_long(c)) turns[c] = turns_after(order, cycle.directions, 0, cycle.directions.size());
+    }
+  });
+  // In order, as the walk would meet them: a long cycle's turns on the threads, and the
+  // first cycle that is not simple reported.
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    if (cycles[c].vertices.size() < 3) continue;
+    if (is_long(c)) turns[c] = turning_number(order, cycles[c].directions, threads);
+    set_orientation<K>(cycles[c], turns[c], ccw_type);
+  }
+  out = std::move(cycles);
+  return true;
+}
+
 }  // namespace detail
 
 template <Kernel K, class Table>
@@ -82,6 +173,9 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
   const PolygonType ccw_type = kTable4[op_index(op)][type_index(ta)][type_index(tb)];
   const bool result_on_left = ta == PolygonType::island;
   std::vector<ResultCycle> out;
+  if constexpr (std::is_same_v<Table, HashEdgeTable>) {
+    if (threads_for(ef.size(), threads) > 1 && detail::forced_cycles(order, ef, ccw_type, threads, out)) return out;
+  }
 
   // The next fragment after arriving at v along `in`: the first one met turning from the
   // reversed arrival direction towards the result region (clockwise when the region lies
@@ -130,13 +224,7 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
       path_dirs.resize(from);
     }
     if (cycle.vertices.size() >= 3) {
-      const int turns = detail::turning_number(order, cycle.directions, threads);
-      if (turns != 1 && turns != -1) {
-        throw KernelFailure(std::string("kernel ") + std::string(K::name) +
-                            ": a result cycle is not a simple polygon (turning number " + std::to_string(turns) + ")");
-      }
-      cycle.counterclockwise = turns == 1;
-      cycle.type = cycle.counterclockwise ? ccw_type : opposite(ccw_type);
+      detail::set_orientation<K>(cycle, detail::turning_number(order, cycle.directions, threads), ccw_type);
     }
     out.push_back(std::move(cycle));
   };

@@ -415,6 +415,46 @@ TEST(EfRuns, SameCyclesBitForBitAsFragmentByFragment) {
   std::cout << runs_made << " runs in " << cycles << " cycles\n";
 }
 
+// Step 6 without choices (detail::forced_cycles) on the large inputs, every operation: where
+// it makes the cycles, the walk over the same EF makes the same ones in the same order, and
+// where some vertex has a choice it makes none. Both happen here.
+TEST(ForcedCycles, SameCyclesAsTheWalkWhereNoVertexHasAChoice) {
+  int forced = 0, refused = 0;
+  for (const auto& [name, ab] : large_inputs()) {
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
+                               Operation::symmetric_difference}) {
+      Arrangement<K> arr = prepare<K>(to_kernel_polygon<K>(ab.first), to_kernel_polygon<K>(ab.second), PairSearch::sweep, 2);
+      normalize_orientations(arr, op, 2);
+      build_vertex_rings(arr, 2);
+      insert_intersections(arr, PairSearch::sweep, 2);
+      const Incidence inc = classify_fragments(arr, 2);
+      HashEdgeTable ef = detail::make_ef_table<HashEdgeTable>(arr);
+      select_runs_into_hash(arr, inc, op, ef, 2);
+      const PolygonType ccw_type =
+          kTable4[op_index(op)][type_index(arr.polygon[0].type)][type_index(arr.polygon[1].type)];
+      std::vector<ResultCycle> got;
+      const bool made = detail::forced_cycles(DirectionOrder<K>(arr.points), ef, ccw_type, 2, got);
+      const std::vector<ResultCycle> want = construct_result_cycles(arr, ef, op, 1);  // the walk, on one thread
+      ASSERT_FALSE(want.empty()) << name << " " << operation_name(op);
+      if (!made) {
+        ++refused;
+        EXPECT_TRUE(got.empty()) << name << " " << operation_name(op);
+        continue;
+      }
+      ++forced;
+      ASSERT_EQ(got.size(), want.size()) << name << " " << operation_name(op);
+      for (std::size_t c = 0; c < want.size(); ++c) {
+        EXPECT_EQ(got[c].vertices, want[c].vertices) << name << " " << operation_name(op) << " cycle " << c;
+        EXPECT_TRUE(got[c].directions == want[c].directions) << name << " " << operation_name(op) << " cycle " << c;
+        EXPECT_EQ(got[c].type, want[c].type) << name << " " << operation_name(op) << " cycle " << c;
+        EXPECT_EQ(got[c].counterclockwise, want[c].counterclockwise) << name << " " << operation_name(op);
+      }
+    }
+  }
+  EXPECT_GT(forced, 0);
+  EXPECT_GT(refused, 0);
+}
+
 // Step 3 with the crossings and touching points the preparation found (one pair search over
 // both polygons, kept when nothing was inserted and every ring stayed one cycle) makes the
 // same fragments as step 3's own search of the vertex-complete edges: per polygon, fragment
