@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <span>
 #include <cstdint>
 #include <memory>
@@ -92,7 +93,7 @@ class CandidatePairs {
       : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite), search_(search) {
     if (search_ == PairSearch::sweep) {
       build_chains(threads);
-      plan();
+      plan(threads);
     }
   }
 
@@ -264,39 +265,60 @@ class CandidatePairs {
     if (n > first) close(n);
   }
 
-  // The first levels of the partition, each subproblem left at the last level a part.
-  void plan() {
+  // The first levels of the partition, each subproblem left at the last level a part. The
+  // first level's subproblems are planned on the threads, each into its own list of parts,
+  // the lists joined in their order: the same parts on any number of threads.
+  void plan(unsigned threads) {
     const std::size_t m = chains_.size();
     const int levels = m >= 32768 ? 2 : (m >= 4096 ? 1 : 0);
+    const unsigned t = threads_for(m, threads);
     if (bipartite_) {
       std::vector<int> a, b;
       for (int c = 0; c < static_cast<int>(m); ++c) (chains_[c].group == 0 ? a : b).push_back(c);
-      plan_both(std::move(a), std::move(b), 0, levels);
+      plan_both(std::move(a), std::move(b), 0, levels, tasks_, t);
     } else {
       std::vector<int> all(m);
       std::iota(all.begin(), all.end(), 0);
-      plan_self(std::move(all), 0, levels);
+      plan_self(std::move(all), 0, levels, tasks_, t);
     }
   }
-  void plan_self(std::vector<int> s, int axis, int levels) {
+  // Plans the four subproblems sub(k, out) (k = 0..3) into `out` in order, on up to
+  // `threads` threads.
+  template <class Sub>
+  static void plan_four(std::vector<Task>& out, unsigned threads, Sub&& sub) {
+    if (threads < 2) {
+      for (int k = 0; k < 4; ++k) sub(k, out);
+      return;
+    }
+    std::array<std::vector<Task>, 4> lists;
+    run_tasks(threads, 4, [&](std::size_t k) { sub(static_cast<int>(k), lists[k]); });
+    for (auto& list : lists) std::move(list.begin(), list.end(), std::back_inserter(out));
+  }
+  void plan_self(std::vector<int> s, int axis, int levels, std::vector<Task>& out, unsigned threads = 1) {
     if (s.size() < 2) return;
     if (levels == 0 || s.size() <= kDirect) {
-      tasks_.push_back({std::move(s), {}, axis, true});
+      out.push_back({std::move(s), {}, axis, true});
       return;
     }
     const auto [below, above, along] = split(s, axis);
     axis = along;
-    const std::vector<int> low(s.begin(), s.begin() + below), high(s.begin() + below, s.begin() + above);
-    const std::vector<int> sides(s.begin(), s.begin() + above), across(s.begin() + above, s.end());
-    plan_self(low, 1 - axis, levels - 1);
-    plan_self(high, 1 - axis, levels - 1);
-    plan_both(sides, across, 1 - axis, levels - 1);
-    plan_self(across, 1 - axis, levels - 1);
+    const auto part = [&](std::size_t from, std::size_t to) {
+      return std::vector<int>(s.begin() + static_cast<std::ptrdiff_t>(from), s.begin() + static_cast<std::ptrdiff_t>(to));
+    };
+    plan_four(out, threads, [&](int k, std::vector<Task>& list) {
+      switch (k) {
+        case 0: plan_self(part(0, below), 1 - axis, levels - 1, list); break;
+        case 1: plan_self(part(below, above), 1 - axis, levels - 1, list); break;
+        case 2: plan_both(part(0, above), part(above, s.size()), 1 - axis, levels - 1, list); break;
+        default: plan_self(part(above, s.size()), 1 - axis, levels - 1, list); break;
+      }
+    });
   }
-  void plan_both(std::vector<int> a, std::vector<int> b, int axis, int levels) {
+  void plan_both(std::vector<int> a, std::vector<int> b, int axis, int levels, std::vector<Task>& out,
+                 unsigned threads = 1) {
     if (a.empty() || b.empty()) return;
     if (levels == 0 || a.size() * b.size() <= kDirect * kDirect / 4) {
-      tasks_.push_back({std::move(a), std::move(b), axis, false});
+      out.push_back({std::move(a), std::move(b), axis, false});
       return;
     }
     const std::size_t na = a.size();
@@ -309,10 +331,14 @@ class CandidatePairs {
     const auto part = [](const std::vector<int>& v, std::size_t from, std::size_t to) {
       return std::vector<int>(v.begin() + static_cast<std::ptrdiff_t>(from), v.begin() + static_cast<std::ptrdiff_t>(to));
     };
-    plan_both(part(a, 0, a_below), part(b, 0, b_below), 1 - axis, levels - 1);
-    plan_both(part(a, a_below, a_above), part(b, b_below, b_above), 1 - axis, levels - 1);
-    plan_both(part(a, 0, a_above), part(b, b_above, b.size()), 1 - axis, levels - 1);
-    plan_both(part(a, a_above, a.size()), b, 1 - axis, levels - 1);
+    plan_four(out, threads, [&](int k, std::vector<Task>& list) {
+      switch (k) {
+        case 0: plan_both(part(a, 0, a_below), part(b, 0, b_below), 1 - axis, levels - 1, list); break;
+        case 1: plan_both(part(a, a_below, a_above), part(b, b_below, b_above), 1 - axis, levels - 1, list); break;
+        case 2: plan_both(part(a, 0, a_above), part(b, b_above, b.size()), 1 - axis, levels - 1, list); break;
+        default: plan_both(part(a, a_above, a.size()), b, 1 - axis, levels - 1, list); break;
+      }
+    });
   }
 
   // The pivot along `axis`: the median of the low ends of up to 15 boxes spread over the set
