@@ -1,11 +1,11 @@
 #!/usr/bin/python3
 # Report of the overlay benchmark against peers: Markdown tables of median times and ratios,
-# and a log-log plot of time against n on blob, from Google Benchmark's JSON output.
+# and log-log plots of time against n, one per workload, from Google Benchmark's JSON output.
 # [BRIEF §6] (the anchors and the bar)
 # Preconditions: JSON written by bin/bench_overlay --benchmark_out=FILE
 # --benchmark_out_format=json (any --benchmark_repetitions); run with /usr/bin/python3
 # (matplotlib from python3-matplotlib).
-"""Usage: plot_overlay.py overlay.json --markdown overlay.md --plot overlay_blob.png"""
+"""Usage: plot_overlay.py overlay.json --markdown overlay.md --plot overlay.png"""
 
 import argparse
 import json
@@ -230,41 +230,50 @@ def bar(medians):
 
 
 def plot(medians, errors, path):
+    """One log-log panel of time against n per workload (TABLE_OP), every runner in each."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(7.5, 5))
+    shown = [w for w in WORKLOADS if any(ww == w and op == TABLE_OP for (_, ww, op, _) in medians)]
+    if not shown:
+        return
+    cols = min(3, len(shown))
+    rows = (len(shown) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(5.2 * cols, 4.0 * rows), squeeze=False)
     runners = [p for p, _ in PEERS] + kernels_of(medians, errors)
-    styles = {"GEOS": "s-", "BoostGeometry": "D-", "Clipper": "^-", "CgalEpeck": "v-"}
-    for r in runners:
-        pts = sorted((n, t) for (rr, w, op, n), t in medians.items() if rr == r and w == "blob" and op == TABLE_OP)
-        if not pts:
-            continue
-        label = dict(PEERS).get(r, r)
-        style = styles.get(r, "o--" if r != "mkbool:exact" else "o-")
-        width = 2.5 if r == "mkbool:exact" else 1.2
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, label=label, linewidth=width, markersize=4)
-    # An n log n guide through the fastest time at the smallest n.
-    ns = sorted({n for (r, w, op, n) in medians if w == "blob" and op == TABLE_OP})
-    if ns:
-        t0 = min(t for (r, w, op, n), t in medians.items() if w == "blob" and op == TABLE_OP and n == ns[0])
-        guide = [t0 * (n * math.log(n)) / (ns[0] * math.log(ns[0])) for n in ns]
-        ax.loglog(ns, guide, ":", color="gray", label="n log n")
-    ax.set_xlabel("n (vertices per polygon)")
-    ax.set_ylabel("median wall time (ms)")
-    ax.set_title(f"blob, {TABLE_OP}: time against n")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    styles = {"GEOS": "s-", "BoostGeometry": "D-", "Clipper": "^-", "ClipperPolyTree": "<-", "CgalEpeck": "v-"}
+    for ax, w in zip(axes.flat, shown):
+        for r in runners:
+            pts = sorted((n, t) for (rr, ww, op, n), t in medians.items() if rr == r and ww == w and op == TABLE_OP)
+            if not pts:
+                continue
+            label = dict(PEERS).get(r, r)
+            style = styles.get(r, "o--" if r != "mkbool:exact" else "o-")
+            width = 2.5 if r == "mkbool:exact" else 1.2
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, label=label, linewidth=width, markersize=4)
+        # An n log n guide through the fastest time at the smallest n.
+        ns = sorted({n for (r, ww, op, n) in medians if ww == w and op == TABLE_OP})
+        if len(ns) > 1 and ns[0] > 1:
+            t0 = min(t for (r, ww, op, n), t in medians.items() if ww == w and op == TABLE_OP and n == ns[0])
+            guide = [t0 * (n * math.log(n)) / (ns[0] * math.log(ns[0])) for n in ns]
+            ax.loglog(ns, guide, ":", color="gray", label="n log n")
+        ax.set_xlabel("n (bench/README.md, Workloads)")
+        ax.set_ylabel("median wall time (ms)")
+        ax.set_title(f"{w}, {TABLE_OP}")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    for ax in list(axes.flat)[len(shown):]:
+        ax.axis("off")
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    fig.savefig(path, dpi=110)
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("json")
     ap.add_argument("--markdown", help="write the tables here (default: stdout)")
-    ap.add_argument("--plot", help="write the blob plot (PNG) here")
+    ap.add_argument("--plot", help="write the plot of every workload (PNG) here")
     ap.add_argument("--readme", help="replace the results between the markers of this README")
     a = ap.parse_args()
     context, medians, runs, counters, errors = load(a.json)
@@ -287,7 +296,7 @@ def update_readme(path, summary, context):
     run = f"Run of {context.get('date', '?')[:16].replace('T', ' ')} UTC (mkbool " \
           f"{context.get('mkbool_commit', '?')}), load average " \
           f"{', '.join(f'{x:.1f}' for x in context.get('load_avg', []))} on {context.get('num_cpus', '?')} CPUs. " \
-          "Every case: bench/results/overlay.md.\n\n![blob: time against n](results/overlay_blob.png)\n\n"
+          "Every case: bench/results/overlay.md.\n\n![time against n, every workload](results/overlay.png)\n\n"
     with open(path, "w") as f:
         f.write(doc[:begin] + "\n" + run + summary.rstrip() + "\n" + doc[end:])
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds bench_overlay in Release, runs the benchmark against peers with repetitions, and
-# writes bench/results/overlay.json, overlay.md and overlay_blob.png.
+# writes bench/results/overlay.json, overlay.md and overlay.png.
 # [BRIEF §6]
 # Preconditions: Debian packages of BRIEF §9 (cmake, ninja, libbenchmark-dev, libgeos-dev,
 # libboost-dev, libpolyclipping-dev, libcgal-dev, python3-matplotlib).
@@ -56,5 +56,5 @@ if [ "$results" = "$bench_dir/results" ] && [ $# -eq 0 ]; then
   readme=(--readme "$bench_dir/README.md")  # only a full default run updates the README
 fi
 /usr/bin/python3 "$bench_dir/plot_overlay.py" "$results/overlay.json" \
-  --markdown "$results/overlay.md" --plot "$results/overlay_blob.png" "${readme[@]}"
-echo "wrote $results/overlay.json, overlay.md, overlay_blob.png"
+  --markdown "$results/overlay.md" --plot "$results/overlay.png" "${readme[@]}"
+echo "wrote $results/overlay.json, overlay.md, overlay.png"
