@@ -1,6 +1,6 @@
 // peak_memory [WORKLOAD] [N] [KERNEL]: the peak memory of one mkbool intersection through the
 // public API (mk::compute, result polygons included), per input vertex. Prints one JSON line.
-// WORKLOAD is blob (default), star, checkerboard or nested_squares; N the size argument of
+// WORKLOAD is any workload of bench/workloads.hpp (default blob); N the size argument of
 // bench/workloads.hpp (default 1000000); KERNEL any of mk::kernel_names() (default: the
 // default kernel). [BRIEF §6] (memory: at most 256 bytes per input vertex at n = 1e6)
 //
@@ -49,7 +49,11 @@ long peak_kib() {
 int main(int argc, char** argv) {
   const std::string workload = argc > 1 ? argv[1] : "blob";
   const auto kind = mk::bench::workload_named(workload);
-  if (!kind) usage_error("unknown workload '" + workload + "' (blob, star, checkerboard, nested_squares)");
+  if (!kind) {
+    std::string known;
+    for (const auto k : mk::bench::all_workload_kinds) known += (known.empty() ? "" : ", ") + std::string(mk::bench::workload_name(k));
+    usage_error("unknown workload '" + workload + "' (" + known + ")");
+  }
   std::size_t n = 1000000;
   if (argc > 2) {
     const std::string_view text = argv[2];
