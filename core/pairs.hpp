@@ -300,8 +300,8 @@ class CandidatePairs {
       out.push_back({std::move(s), {}, axis, true});
       return;
     }
-    const auto [below, above, along] = split(s, axis);
-    axis = along;
+    std::size_t below = 0, above = 0;  // plain variables: the lambdas below capture them (clang 14)
+    std::tie(below, above, axis) = split(s, axis);
     const auto part = [&](std::size_t from, std::size_t to) {
       return std::vector<int>(s.begin() + static_cast<std::ptrdiff_t>(from), s.begin() + static_cast<std::ptrdiff_t>(to));
     };
@@ -326,8 +326,9 @@ class CandidatePairs {
     ab.insert(ab.end(), b.begin(), b.end());
     const int pivot = choose_pivot(ab, axis);
     a.assign(ab.begin(), ab.begin() + static_cast<std::ptrdiff_t>(na));
-    const auto [a_below, a_above] = split_at(a, axis, pivot);
-    const auto [b_below, b_above] = split_at(b, axis, pivot);
+    std::size_t a_below = 0, a_above = 0, b_below = 0, b_above = 0;  // captured below: no structured bindings (clang 14)
+    std::tie(a_below, a_above) = split_at(a, axis, pivot);
+    std::tie(b_below, b_above) = split_at(b, axis, pivot);
     const auto part = [](const std::vector<int>& v, std::size_t from, std::size_t to) {
       return std::vector<int>(v.begin() + static_cast<std::ptrdiff_t>(from), v.begin() + static_cast<std::ptrdiff_t>(to));
     };
@@ -531,8 +532,9 @@ class CandidatePairs {
       }
       std::tie(axis, pivot) = choose_split(std::span<const int>(picks.data(), k), axis);
     }
-    const auto [a_below, a_above] = split_at(a, axis, pivot);
-    const auto [b_below, b_above] = split_at(b, axis, pivot);
+    std::size_t a_below = 0, a_above = 0, b_below = 0, b_above = 0;  // captured below: no structured bindings (clang 14)
+    std::tie(a_below, a_above) = split_at(a, axis, pivot);
+    std::tie(b_below, b_above) = split_at(b, axis, pivot);
     if (a_above + b_above == 0) {  // every box lies across the pivot: try the other axis
       search_both(a, b, 1 - axis, stuck ? kMaxDepth : depth + 1, f, true);
       return;

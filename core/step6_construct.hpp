@@ -102,13 +102,11 @@ bool forced_cycles(const DirectionOrder<K>& order, const HashEdgeTable& ef, Poly
   std::vector<int> next(n);  // per live entry: the live entry after it; -1 for dead ones
   std::atomic<bool> forced{true};
   run_blocks(threads, n, 8 * static_cast<std::size_t>(threads), [&](std::size_t first, std::size_t last) {
-    bool ok = true;
-    for (std::size_t i = first; i < last; ++i) {
+    for (std::size_t i = first; i < last && forced.load(std::memory_order_relaxed); ++i) {  // stops at a choice
       const EfEntry& e = ef.entry(i);
       next[i] = e.alive ? ef.only_from(e.to) : -1;
-      ok = ok && (!e.alive || (next[i] >= 0 && e.from != e.to));
+      if (e.alive && (next[i] < 0 || e.from == e.to)) forced = false;
     }
-    if (!ok) forced = false;
   });
   if (!forced) return false;
   struct Traced {
