@@ -476,8 +476,8 @@ int main(int argc, char** argv) {
   // The same allocator setting for every library in this process: glibc keeps freed memory
   // instead of returning it to the kernel (no mmap for large blocks, no trimming), so that
   // repeated runs measure computation rather than first-touch page faults, which cost about
-  // 8 us each on the VM these figures come from (README, "Peers"). --overlay_default_malloc
-  // measures with glibc's defaults instead.
+  // 8 us each on the VM these figures come from (bench/README.md, "What is timed").
+  // --overlay_default_malloc measures with glibc's defaults instead.
   if (!mk::bench::default_malloc) {
     if (mallopt(M_MMAP_MAX, 0) != 1 || mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max()) != 1) {
       std::fprintf(stderr, "bench_overlay: mallopt failed\n");

@@ -18,9 +18,17 @@ from collections import defaultdict
 PEERS = [("GEOS", "GEOS"), ("BoostGeometry", "Boost.Geometry"), ("Clipper", "Clipper"),
          ("ClipperPolyTree", "Clipper PolyTree"), ("CgalEpeck", "CGAL Epeck")]
 INEXACT_FAST_PEERS = ["GEOS", "BoostGeometry"]  # the bar's "fastest inexact peer"
-TABLE_ROWS = [("blob", 100_000), ("blob", 1_000_000), ("star", 10_000), ("stripes", 8_000),
-              ("checkerboard", 10_000), ("checkerboard", 100_000), ("checkerboard_shared", 100_000),
-              ("checkerboard_offset", 100_000), ("many_holes", 100_000), ("long_spikes", 1_000_000)]
+TABLE_ROWS = [("blob", 100_000), ("blob", 1_000_000), ("blob", 10_000_000), ("star", 10_000), ("star", 20_000),
+              ("stripes", 8_000), ("stripes", 125_000), ("checkerboard", 10_000), ("checkerboard", 100_000),
+              ("checkerboard_shared", 10_000), ("checkerboard_shared", 100_000), ("checkerboard_offset", 10_000),
+              ("checkerboard_offset", 100_000), ("many_holes", 10_000), ("many_holes", 100_000),
+              ("long_spikes", 100_000), ("long_spikes", 1_000_000), ("nested_squares", 1_000),
+              ("nested_squares", 100_000)]
+OPERATIONS = ["intersection", "union", "difference", "xor"]
+# Issue 14's comparison: every operation at these sizes, exact against the peers that return
+# polygons with holes and Clipper.
+EVERY_OP_PEERS = ["GEOS", "BoostGeometry", "Clipper", "ClipperPolyTree"]
+SLOPE_BAR = 1.25  # issue 14: log-log slope of time against size (n + k), 10^3 to 10^6 vertices
 WORKLOADS = ["blob", "star", "checkerboard", "nested_squares", "stripes", "checkerboard_shared",
              "checkerboard_offset", "many_holes", "long_spikes"]
 TABLE_OP = "intersection"
@@ -28,6 +36,9 @@ NAME = re.compile(r"^BM_Overlay<(?P<runner>[^>]+)>/(?P<workload>\w+)/(?P<op>\w+)
 SUMMARY_END = "<!-- end of the summary: the README copies the text above -->"
 README_BEGIN = "<!-- overlay results: written by bench/plot_overlay.py --readme -->"
 README_END = "<!-- end of overlay results -->"
+TOP_BEGIN = "<!-- speed summary: written by bench/plot_overlay.py --top-readme -->"
+TOP_END = "<!-- end of speed summary -->"
+COMPACT_PEERS = ["GEOS", "BoostGeometry", "Clipper", "ClipperPolyTree", "CgalEpeck"]
 TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
 
 
@@ -54,6 +65,24 @@ def load(path):
     runs = {k: len(v) for k, v in times.items()}
     last = {k: v[-1] for k, v in counters.items()}
     return doc.get("context", {}), medians, runs, last, errors
+
+
+def load_parts(paths):
+    """load() over the parts of one run: each later part replaces the workloads it holds."""
+    context, medians, runs, counters, errors = load(paths[0])
+    commits = [context.get("mkbool_commit", "?")]
+    for path in paths[1:]:
+        c2, m2, r2, k2, e2 = load(path)
+        held = {k[1] for k in list(m2) + list(e2)}
+        for d, d2 in ((medians, m2), (runs, r2), (counters, k2), (errors, e2)):
+            for key in [k for k in d if k[1] in held]:
+                del d[key]
+            d.update(d2)
+        commits.append(c2.get("mkbool_commit", "?"))
+    if len(paths) > 1:
+        context["mkbool_commit"] = " and ".join(commits)
+        context["parts"] = len(paths)
+    return context, medians, runs, counters, errors
 
 
 def fmt_n(n):
@@ -102,7 +131,8 @@ def markdown(context, medians, runs, counters, errors):
     label = lambda r: r.replace("mkbool:", "mkbool `") + "`" if r.startswith("mkbool:") else dict(PEERS).get(r, r)
     reps = sorted(set(runs.values()))
     out.append(f"Operation: {TABLE_OP}. Median wall time over {'/'.join(map(str, reps))} runs "
-               "(see bench/README.md for which cases run once); n = vertices per polygon.\n")
+               "(see bench/README.md for which cases run once); n is each workload's size "
+               "(bench/README.md, Workloads).\n")
     header = ["workload"] + [p[1] for p in PEERS] + [label(k) for k in kernels]
     out.append("| " + " | ".join(header) + " |")
     out.append("|" + "---|" * len(header))
@@ -131,6 +161,9 @@ def markdown(context, medians, runs, counters, errors):
     out.append("")
 
     out.append(bar(medians))
+    out.append(every_operation(medians, errors, label))
+    out.append(growth(medians, counters))
+    out.append(issue14_bars(medians, counters))
 
     out.append("Relative area difference against mkbool's exact area "
                f"(reference kernel `{context.get('mkbool_reference_kernel', '?')}`), "
@@ -229,6 +262,191 @@ def bar(medians):
     return "\n".join(lines) + "\n"
 
 
+def largest_sizes(medians):
+    """Per workload, the largest n `exact` ran at, and the largest below it that is a power of 10."""
+    out = {}
+    for w in WORKLOADS:
+        ns = sorted({n for (r, ww, op, n) in medians if r == "mkbool:exact" and ww == w})
+        if ns:
+            out[w] = ns
+    return out
+
+
+def every_operation(medians, errors, label):
+    """Every operation at 10^4 and at each workload's largest size: exact against the peers."""
+    lines = ["Every operation, `exact` against the peers (median wall time; ratio = exact's time / "
+             "the peer's, below 1: mkbool is faster):\n"]
+    header = ["workload", "n", "op"] + [label(p) for p in EVERY_OP_PEERS] + \
+             ["mkbool `exact`", "exact / GEOS", "exact / Boost.Geometry", "exact / Clipper PolyTree"]
+    lines.append("| " + " | ".join(header) + " |")
+    lines.append("|" + "---|" * len(header))
+    for w, ns in largest_sizes(medians).items():
+        regular = [n for n in ns if n < 10_000_000]
+        shown = sorted({n for n in regular if n == 10_000} | {regular[-1]})
+        for n in shown:
+            for op in OPERATIONS:
+                te = medians.get(("mkbool:exact", w, op, n))
+                if te is None:
+                    continue
+                row = [w, fmt_n(n), op] + [cell(medians, errors, (p, w, op, n)) for p in EVERY_OP_PEERS]
+                row.append(fmt_ms(te))
+                for p in ("GEOS", "BoostGeometry", "ClipperPolyTree"):
+                    tp = medians.get((p, w, op, n))
+                    row.append(fmt_ratio(te / tp) if tp else "-")
+                lines.append("| " + " | ".join(row) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def size_of(counters, w, op, n):
+    """The size time is measured against: input vertices plus crossings (exact's counters)."""
+    c = counters.get(("mkbool:exact", w, op, n), {})
+    v = c.get("vertices_in")
+    if v is None:
+        return None
+    return v + c.get("crossings", 0)
+
+
+def growth(medians, counters):
+    """Log-log slope of exact's time against n + k per workload and operation."""
+    lines = [f"Growth of `exact`'s time with the size (input vertices plus crossings, n + k), per "
+             f"workload and operation: the log-log slope from the first size with at least 10^3 "
+             f"vertices to the largest, and the steepest step between two sizes of the run (issue "
+             f"14's bar: at most {SLOPE_BAR}; n log n gives about 1.1 over three decades):\n",
+             "| workload | op | sizes (n + k) | slope | steepest step | GEOS's slope, same sizes |",
+             "|---|---|---|---|---|---|"]
+    for w in WORKLOADS:
+        for op in OPERATIONS:
+            pts = []
+            for (r, ww, oo, n), t in medians.items():
+                if r == "mkbool:exact" and ww == w and oo == op:
+                    size = size_of(counters, w, op, n)
+                    if size and size >= 1000:
+                        pts.append((size, t, n))
+            pts.sort()
+            if len(pts) < 2:
+                continue
+            (s0, t0, n0), (s1, t1, n1) = pts[0], pts[-1]
+            slope = math.log(t1 / t0) / math.log(s1 / s0)
+            steps = [(math.log(b[1] / a[1]) / math.log(b[0] / a[0]), a[2], b[2]) for a, b in zip(pts, pts[1:])]
+            worst = max(steps)
+            geos = [(s, medians.get(("GEOS", w, op, n))) for s, _, n in pts]
+            geos = [(s, t) for s, t in geos if t]
+            gslope = (f"{math.log(geos[-1][1] / geos[0][1]) / math.log(geos[-1][0] / geos[0][0]):.2f} "
+                      f"({fmt_n(int(geos[0][0]))}..{fmt_n(int(geos[-1][0]))})") if len(geos) >= 2 else "-"
+            lines.append(f"| {w} | {op} | {fmt_size(s0)}..{fmt_size(s1)} | {slope:.2f} | "
+                         f"{worst[0]:.2f} (n = {fmt_n(worst[1])} to {fmt_n(worst[2])}) | {gslope} |")
+    return "\n".join(lines) + "\n"
+
+
+def fmt_size(s):
+    return f"{s:.2g}".replace("e+0", "e").replace("e+", "e")
+
+
+def issue14_bars(medians, counters):
+    """Issue 14's bars that one run of the benchmark measures, met or not."""
+    get = lambda r, w, op, n: medians.get((r, w, op, n))
+    k = "mkbool:exact"
+    lines = ["Issue 14's bars measured by this run (`exact`; the command end to end, the cold "
+             "process, memory and threads are measured apart, README):\n",
+             "| bar | case | measured | met |", "|---|---|---|---|"]
+
+    def row(text, case, value, ok):
+        lines.append(f"| {text} | {case} | {value} | {'yes' if ok else 'no'} |")
+
+    for op in OPERATIONS:
+        te, tg, tc = get(k, "stripes", op, 8_000), get("GEOS", "stripes", op, 8_000), get("Clipper", "stripes", op, 8_000)
+        if te and tg:
+            row("stripes 8,000: faster than GEOS", op, f"{tg / te:.1f}x faster", te < tg)
+        if te and tc:
+            row("stripes 8,000: within 3x of Clipper", op, f"{te / tc:.2f}x", te <= 3 * tc)
+    for w in ("checkerboard", "checkerboard_shared", "checkerboard_offset"):
+        for n in (10_000, 100_000):
+            for op in ("intersection", "union"):
+                te = get(k, w, op, n)
+                if not te:
+                    continue
+                tg, tp = get("GEOS", w, op, n), get("ClipperPolyTree", w, op, n)
+                case = f"{w} {fmt_n(n)} {op}"
+                if tg:
+                    row("checkerboards: at least 5x faster than GEOS", case, f"{tg / te:.1f}x faster", tg >= 5 * te)
+                if tp:
+                    row("checkerboards: within 2x of Clipper PolyTree", case, f"{te / tp:.2f}x", te <= 2 * tp)
+                else:
+                    lines.append(f"| checkerboards: within 2x of Clipper PolyTree | {case} | Clipper PolyTree not run "
+                                 "(bench/README.md, Limits) | - |")
+    for n in (100_000, 1_000_000):
+        te = get(k, "blob", "intersection", n)
+        fast = [(get(p, "blob", "intersection", n), p) for p in INEXACT_FAST_PEERS]
+        fast = [f for f in fast if f[0]]
+        if te and fast:
+            t, p = min(fast)
+            row("blob: at most 1.0x the faster of GEOS and Boost.Geometry", f"{fmt_n(n)} intersection",
+                f"{te / t:.2f}x ({p})", te <= t)
+    te, tc = get(k, "star", "intersection", 10_000), get("Clipper", "star", "intersection", 10_000)
+    if te and tc:
+        row("star 1e4: faster than Clipper", "intersection", f"{tc / te:.1f}x faster", te < tc)
+    return "\n".join(lines) + "\n"
+
+
+def top_summary(context, medians, counters, errors):
+    """The README's speed summary: the intersection at the table's sizes, growth, issue 14's bars."""
+    label = lambda r: dict(PEERS).get(r, r)
+    parts = f" in {context['parts']} parts (bench/README.md, Results)" if context.get("parts") else ""
+    out = [f"One run of the default benchmark{parts}, {context.get('date', '?')[:16].replace('T', ' ')} UTC, mkbool "
+           f"{context.get('mkbool_commit', '?')}, load average "
+           f"{', '.join(f'{x:.1f}' for x in context.get('load_avg', []))} (1, 5, 15 minutes) at its start; median wall time of "
+           "the intersection, the whole result as users receive it (polygons with their holes); "
+           "every case and operation: bench/README.md and bench/results/overlay.md.\n"]
+    header = ["workload, n", "n + k"] + [label(p) for p in COMPACT_PEERS] + ["mkbool `exact`",
+                                                                          "exact / fastest peer"]
+    out.append("| " + " | ".join(header) + " |")
+    out.append("|" + "---|" * len(header))
+    for w, n in TABLE_ROWS:
+        te = medians.get(("mkbool:exact", w, TABLE_OP, n))
+        if te is None:
+            continue
+        size = size_of(counters, w, TABLE_OP, n)
+        peers = [(medians[(p, w, TABLE_OP, n)], p) for p in COMPACT_PEERS if (p, w, TABLE_OP, n) in medians]
+        best = f"{te / min(peers)[0]:.2f}x ({label(min(peers)[1])})" if peers else "-"
+        row = [f"{w}, {fmt_n(n)}", fmt_size(size) if size else "-"]
+        row += [cell(medians, errors, (p, w, TABLE_OP, n)) for p in COMPACT_PEERS]
+        row += [fmt_ms(te), best]
+        out.append("| " + " | ".join(row) + " |")
+    out.append("")
+    out.append("*not run*: left out by the default run's limits (bench/README.md, \"Limits of the default "
+               "run\"): each is a size where that library takes minutes.\n")
+    out.append(issue14_bars(medians, counters))
+    out.append(growth_summary(medians, counters))
+    return "\n".join(out)
+
+
+def growth_summary(medians, counters):
+    """Per workload, the largest of the four operations' slopes (the table in bench/README.md)."""
+    lines = [f"Growth (issue 14's bar: log-log slope of time against n + k at most {SLOPE_BAR} from 10^3 "
+             "to 10^6 vertices): per workload, `exact`'s slope over the run's sizes, the largest of "
+             "its four operations, and the steepest step between two sizes:\n",
+             "| workload | sizes (n + k) | slope, largest of the 4 operations | steepest step | met |",
+             "|---|---|---|---|---|"]
+    for w in WORKLOADS:
+        worst, step, span = None, None, None
+        for op in OPERATIONS:
+            pts = sorted((size_of(counters, w, op, n), t, n) for (r, ww, oo, n), t in medians.items()
+                         if r == "mkbool:exact" and ww == w and oo == op and (size_of(counters, w, op, n) or 0) >= 1000)
+            if len(pts) < 2:
+                continue
+            slope = math.log(pts[-1][1] / pts[0][1]) / math.log(pts[-1][0] / pts[0][0])
+            st = max(math.log(b[1] / a[1]) / math.log(b[0] / a[0]) for a, b in zip(pts, pts[1:]))
+            if worst is None or slope > worst[0]:
+                worst = (slope, op)
+                span = f"{fmt_size(pts[0][0])}..{fmt_size(pts[-1][0])}"
+            if step is None or st > step[0]:
+                step = (st, op)
+        if worst:
+            lines.append(f"| {w} | {span} | {worst[0]:.2f} ({worst[1]}) | {step[0]:.2f} ({step[1]}) | "
+                         f"{'yes' if worst[0] <= SLOPE_BAR else 'no'} |")
+    return "\n".join(lines) + "\n"
+
+
 def plot(medians, errors, path):
     """One log-log panel of time against n per workload (TABLE_OP), every runner in each."""
     import matplotlib
@@ -271,12 +489,14 @@ def plot(medians, errors, path):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("json")
+    ap.add_argument("json", nargs="+", help="one run's JSON; several: the parts of one run, a later part "
+                    "replacing every case of the workloads it holds (a run stopped and resumed)")
     ap.add_argument("--markdown", help="write the tables here (default: stdout)")
     ap.add_argument("--plot", help="write the plot of every workload (PNG) here")
     ap.add_argument("--readme", help="replace the results between the markers of this README")
+    ap.add_argument("--top-readme", help="replace the speed summary between the markers of this README")
     a = ap.parse_args()
-    context, medians, runs, counters, errors = load(a.json)
+    context, medians, runs, counters, errors = load_parts(a.json)
     text = markdown(context, medians, runs, counters, errors)
     if a.markdown:
         with open(a.markdown, "w") as f:
@@ -287,6 +507,8 @@ def main():
         plot(medians, errors, a.plot)
     if a.readme:
         update_readme(a.readme, text.split(SUMMARY_END)[0], context)
+    if a.top_readme:
+        replace_between(a.top_readme, TOP_BEGIN, TOP_END, top_summary(context, medians, counters, errors))
 
 
 def update_readme(path, summary, context):
@@ -295,10 +517,20 @@ def update_readme(path, summary, context):
     begin, end = doc.index(README_BEGIN) + len(README_BEGIN), doc.index(README_END)
     run = f"Run of {context.get('date', '?')[:16].replace('T', ' ')} UTC (mkbool " \
           f"{context.get('mkbool_commit', '?')}), load average " \
-          f"{', '.join(f'{x:.1f}' for x in context.get('load_avg', []))} on {context.get('num_cpus', '?')} CPUs. " \
+          f"{', '.join(f'{x:.1f}' for x in context.get('load_avg', []))} on {context.get('num_cpus', '?')} CPUs" \
+          f"{'' if not context.get('parts') else ', in ' + str(context['parts']) + ' parts (see above)'}. " \
           "Every case: bench/results/overlay.md.\n\n![time against n, every workload](results/overlay.png)\n\n"
     with open(path, "w") as f:
         f.write(doc[:begin] + "\n" + run + summary.rstrip() + "\n" + doc[end:])
+
+
+
+def replace_between(path, begin_marker, end_marker, text):
+    with open(path) as f:
+        doc = f.read()
+    begin, end = doc.index(begin_marker) + len(begin_marker), doc.index(end_marker)
+    with open(path, "w") as f:
+        f.write(doc[:begin] + "\n" + text.rstrip() + "\n" + doc[end:])
 
 
 if __name__ == "__main__":

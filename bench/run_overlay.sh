@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds bench_overlay in Release, runs the benchmark against peers with repetitions, and
-# writes bench/results/overlay.json, overlay.md and overlay.png.
+# writes bench/results/overlay.json, overlay.md and overlay.png (and, on a full default run,
+# the results in bench/README.md and the speed summary in README.md).
 # [BRIEF §6]
 # Preconditions: Debian packages of BRIEF §9 (cmake, ninja, libbenchmark-dev, libgeos-dev,
 # libboost-dev, libpolyclipping-dev, libcgal-dev, python3-matplotlib).
@@ -53,7 +54,8 @@ start=$(date +%s)
 echo "bench_overlay took $(($(date +%s) - start)) s"
 readme=()
 if [ "$results" = "$bench_dir/results" ] && [ $# -eq 0 ]; then
-  readme=(--readme "$bench_dir/README.md")  # only a full default run updates the README
+  # only a full default run updates the READMEs (bench/README.md's results, README.md's summary)
+  readme=(--readme "$bench_dir/README.md" --top-readme "$root/README.md")
 fi
 /usr/bin/python3 "$bench_dir/plot_overlay.py" "$results/overlay.json" \
   --markdown "$results/overlay.md" --plot "$results/overlay.png" "${readme[@]}"
