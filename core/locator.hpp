@@ -86,6 +86,19 @@ class BlockedOrder {
     }
   }
 
+  // The element after e, which is present, or -1 when e is the last. Throws KernelFailure
+  // where the comparison does not find e (inconsistent inexact predicates), as erase does.
+  template <class Less>
+  int next(int e, Less&& less) {
+    const auto [b, i] = find(e, less);
+    if (b >= blocks_.size() || i >= blocks_[b].size() || blocks_[b][i] != e) {
+      throw KernelFailure("the sweep's order of edges is inconsistent (inexact predicates)");
+    }
+    finger_ = {b, i};
+    if (i + 1 < blocks_[b].size()) return blocks_[b][i + 1];
+    return b + 1 < blocks_.size() ? blocks_[b + 1].front() : -1;
+  }
+
   // The last element x with less(x, key) and the first without, each -1 when there is none.
   template <class Key, class Less>
   std::pair<int, int> around(const Key& key, Less&& less) {

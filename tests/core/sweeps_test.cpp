@@ -190,6 +190,43 @@ TEST(WindingLocator, BatchSweepEqualsScanPerQuery) {
   EXPECT_GT(compared, 2000);
 }
 
+// BlockedOrder against std::set under random insertions and erasures of thousands of ints,
+// so that blocks split, empty and are removed: after each change, next(e) is the element
+// after e in the set for sampled e (across block boundaries too), and insert returns it.
+TEST(BlockedOrder, NextAndInsertAgreeWithAnOrderedSet) {
+  const std::uint64_t seed = 5;
+  std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> value(0, 20'000);
+  detail::BlockedOrder order;
+  std::set<int> set;
+  const auto less = [](int a, int b) { return a < b; };
+  const auto after = [&](int e) {
+    const auto it = set.upper_bound(e);
+    return it == set.end() ? -1 : *it;
+  };
+  int checked = 0;
+  for (int step = 0; step < 30'000; ++step) {
+    const int e = value(rng);
+    const bool grow = step < 15'000 ? step % 4 != 3 : step % 4 == 3;  // fill, then drain
+    if (set.count(e) == 0 && grow) {
+      set.insert(e);
+      ASSERT_EQ(order.insert(e, less), after(e)) << "step " << step;
+    } else if (set.count(e) != 0 && !grow) {
+      set.erase(e);
+      order.erase(e, less);
+    }
+    if (step % 50 == 0 && !set.empty()) {
+      for (const int x : set) {
+        ASSERT_EQ(order.next(x, less), after(x)) << "step " << step << " element " << x;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(set.size(), 0u);
+  EXPECT_GT(checked, 1'000'000);
+}
+
 // Concentric square annuli, each shifted a little at random, against the same: results with
 // many islands inside holes inside islands.
 Polygon annuli(std::mt19937_64& rng, int n, double shift) {
@@ -205,14 +242,16 @@ Polygon annuli(std::mt19937_64& rng, int n, double shift) {
   return p;
 }
 
-TEST(InclusionParents, ShellIsTheInnermostIslandAroundEachHole) {
-  const std::uint64_t seed = 7;
+// Every hole's shell from inclusion_parents against the innermost island around the midpoint
+// of its first edge, found by exact point location in every island: `rings` annuli per
+// polygon, `rounds` random inputs, each operation. Returns the number of holes checked.
+int check_innermost_shells(std::uint64_t seed, int rings_per_polygon, int rounds) {
   std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
   std::mt19937_64 rng(seed);
   int holes = 0;
-  for (int round = 0; round < 12; ++round) {
-    const Polygon a = annuli(rng, 6, 0);
-    const Polygon b = annuli(rng, 6, round % 2 == 0 ? 1.5 : 0.75);
+  for (int round = 0; round < rounds; ++round) {
+    const Polygon a = annuli(rng, rings_per_polygon, 0);
+    const Polygon b = annuli(rng, rings_per_polygon, round % 2 == 0 ? 1.5 : 0.75);
     for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference,
                                Operation::symmetric_difference}) {
       const auto r = boolean_op<RationalKernel>(a, b, Options{op});
@@ -243,8 +282,15 @@ TEST(InclusionParents, ShellIsTheInnermostIslandAroundEachHole) {
       }
     }
   }
-  EXPECT_GT(holes, 100);
+  return holes;
 }
+
+TEST(InclusionParents, ShellIsTheInnermostIslandAroundEachHole) { EXPECT_GT(check_innermost_shells(7, 6, 12), 100); }
+
+// Deep nesting: hundreds of edges cross the sweep line at once, so the sweep's ordered
+// blocks (BlockedOrder, at most 128 edges each) split and the neighbour above a hole's
+// edge is often in the next block.
+TEST(InclusionParents, ShellOfEachHoleInHundredsOfNestedRings) { EXPECT_GT(check_innermost_shells(11, 150, 2), 1000); }
 
 // Inputs of tens of thousands of vertices, so that every parallel phase runs on threads
 // (core/parallel.hpp: kParallelWork).
