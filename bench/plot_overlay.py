@@ -306,6 +306,18 @@ def size_of(counters, w, op, n):
     return v + c.get("crossings", 0)
 
 
+def exact_growth(medians, counters, w, op):
+    """exact's points (n + k, time, n) from 10^3 vertices on, its log-log slope over them and
+    its steepest step (slope, n from, n to); None with fewer than two points."""
+    pts = sorted((size_of(counters, w, op, n), t, n) for (r, ww, oo, n), t in medians.items()
+                 if r == "mkbool:exact" and ww == w and oo == op and (size_of(counters, w, op, n) or 0) >= 1000)
+    if len(pts) < 2:
+        return None
+    slope = math.log(pts[-1][1] / pts[0][1]) / math.log(pts[-1][0] / pts[0][0])
+    steepest = max((math.log(b[1] / a[1]) / math.log(b[0] / a[0]), a[2], b[2]) for a, b in zip(pts, pts[1:]))
+    return pts, slope, steepest
+
+
 def growth(medians, counters):
     """Log-log slope of exact's time against n + k per workload and operation."""
     lines = [f"Growth of `exact`'s time with the size (input vertices plus crossings, n + k), per "
@@ -316,19 +328,11 @@ def growth(medians, counters):
              "|---|---|---|---|---|---|"]
     for w in WORKLOADS:
         for op in OPERATIONS:
-            pts = []
-            for (r, ww, oo, n), t in medians.items():
-                if r == "mkbool:exact" and ww == w and oo == op:
-                    size = size_of(counters, w, op, n)
-                    if size and size >= 1000:
-                        pts.append((size, t, n))
-            pts.sort()
-            if len(pts) < 2:
+            g = exact_growth(medians, counters, w, op)
+            if g is None:
                 continue
-            (s0, t0, n0), (s1, t1, n1) = pts[0], pts[-1]
-            slope = math.log(t1 / t0) / math.log(s1 / s0)
-            steps = [(math.log(b[1] / a[1]) / math.log(b[0] / a[0]), a[2], b[2]) for a, b in zip(pts, pts[1:])]
-            worst = max(steps)
+            pts, slope, worst = g
+            s0, s1 = pts[0][0], pts[-1][0]
             geos = [(s, medians.get(("GEOS", w, op, n))) for s, _, n in pts]
             geos = [(s, t) for s, t in geos if t]
             gslope = (f"{math.log(geos[-1][1] / geos[0][1]) / math.log(geos[-1][0] / geos[0][0]):.2f} "
@@ -430,12 +434,10 @@ def growth_summary(medians, counters):
     for w in WORKLOADS:
         worst, step, span = None, None, None
         for op in OPERATIONS:
-            pts = sorted((size_of(counters, w, op, n), t, n) for (r, ww, oo, n), t in medians.items()
-                         if r == "mkbool:exact" and ww == w and oo == op and (size_of(counters, w, op, n) or 0) >= 1000)
-            if len(pts) < 2:
+            g = exact_growth(medians, counters, w, op)
+            if g is None:
                 continue
-            slope = math.log(pts[-1][1] / pts[0][1]) / math.log(pts[-1][0] / pts[0][0])
-            st = max(math.log(b[1] / a[1]) / math.log(b[0] / a[0]) for a, b in zip(pts, pts[1:]))
+            pts, slope, (st, _, _) = g
             if worst is None or slope > worst[0]:
                 worst = (slope, op)
                 span = f"{fmt_size(pts[0][0])}..{fmt_size(pts[-1][0])}"
