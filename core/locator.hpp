@@ -52,12 +52,7 @@ class BlockedOrder {
     }
     auto& block = blocks_[b];
     block.insert(block.begin() + static_cast<std::ptrdiff_t>(i), e);
-    int after = -1;
-    if (i + 1 < block.size()) {
-      after = block[i + 1];
-    } else if (b + 1 < blocks_.size()) {
-      after = blocks_[b + 1].front();
-    }
+    const int after = at_or_after(b, i + 1);
     finger_ = {b, i};
     if (block.size() > 2 * kBlock) {
       std::vector<int> upper(block.begin() + kBlock, block.end());
@@ -73,10 +68,7 @@ class BlockedOrder {
   // rather than remove another element or read past the end.
   template <class Less>
   void erase(int e, Less&& less) {
-    const auto [b, i] = find(e, less);
-    if (b >= blocks_.size() || i >= blocks_[b].size() || blocks_[b][i] != e) {
-      throw KernelFailure("the sweep's order of edges is inconsistent (inexact predicates)");
-    }
+    const auto [b, i] = find_present(e, less);
     auto& block = blocks_[b];
     block.erase(block.begin() + static_cast<std::ptrdiff_t>(i));
     finger_ = {b, i};
@@ -90,13 +82,9 @@ class BlockedOrder {
   // where the comparison does not find e (inconsistent inexact predicates), as erase does.
   template <class Less>
   int next(int e, Less&& less) {
-    const auto [b, i] = find(e, less);
-    if (b >= blocks_.size() || i >= blocks_[b].size() || blocks_[b][i] != e) {
-      throw KernelFailure("the sweep's order of edges is inconsistent (inexact predicates)");
-    }
+    const auto [b, i] = find_present(e, less);
     finger_ = {b, i};
-    if (i + 1 < blocks_[b].size()) return blocks_[b][i + 1];
-    return b + 1 < blocks_.size() ? blocks_[b + 1].front() : -1;
+    return at_or_after(b, i + 1);
   }
 
   // The last element x with less(x, key) and the first without, each -1 when there is none.
@@ -106,7 +94,7 @@ class BlockedOrder {
     int before = -1, after = -1;
     if (b < blocks_.size()) {
       finger_ = {b, i};
-      after = i < blocks_[b].size() ? blocks_[b][i] : (b + 1 < blocks_.size() ? blocks_[b + 1].front() : -1);
+      after = at_or_after(b, i);
       if (i > 0) {
         before = blocks_[b][i - 1];
       } else if (b > 0) {
@@ -124,7 +112,7 @@ class BlockedOrder {
     const auto [b, i] = find(key, less);
     if (b == blocks_.size()) return -1;
     finger_ = {b, i};
-    return i < blocks_[b].size() ? blocks_[b][i] : (b + 1 < blocks_.size() ? blocks_[b + 1].front() : -1);
+    return at_or_after(b, i);
   }
 
  private:
@@ -134,6 +122,25 @@ class BlockedOrder {
   struct Place {
     std::size_t block, index;
   };
+
+  // The element at index i of block b (b a block), or the first of the next block when i is
+  // past b's end; -1 when there is none.
+  int at_or_after(std::size_t b, std::size_t i) const {
+    if (i < blocks_[b].size()) return blocks_[b][i];
+    return b + 1 < blocks_.size() ? blocks_[b + 1].front() : -1;
+  }
+
+  // The place of e, which is present. Where the comparison does not find it there
+  // (inconsistent inexact predicates), throws KernelFailure rather than touch another element
+  // or read past the end.
+  template <class Less>
+  Place find_present(int e, Less& less) const {
+    const Place at = find(e, less);
+    if (at.block >= blocks_.size() || at.index >= blocks_[at.block].size() || blocks_[at.block][at.index] != e) {
+      throw KernelFailure("the sweep's order of edges is inconsistent (inexact predicates)");
+    }
+    return at;
+  }
 
   // The lower bound of key as (block, index): the first block whose last element is not
   // before key, and the position in it (blocks_.size() when every element is before key).
