@@ -62,6 +62,9 @@ const std::vector<std::pair<WorkloadKind, std::vector<std::size_t>>> kSizes = {
     {WorkloadKind::checkerboard_offset, {1'000, 10'000, 100'000}},
     {WorkloadKind::many_holes, {1'000, 10'000, 100'000}},
     {WorkloadKind::long_spikes, {1'000, 10'000, 100'000, 1'000'000}},
+    // Contour lines (annuli of two 64-point rings each): 256 n input vertices, up to about
+    // 10^6; boxes that overlap without their edges meeting (the red-blue sweep's case).
+    {WorkloadKind::nested_wavy_rings, {10, 100, 1'000, 4'000}},
 };
 
 // The one size past a workload's regular sizes (blob 10^7): run once, intersection only,
@@ -99,16 +102,19 @@ constexpr SizeLimit kSizeLimits[] = {
     {"mkbool:rational", WorkloadKind::star, 1'000},
     {"mkbool:rational", WorkloadKind::checkerboard, 1'000},
     {"mkbool:rational", WorkloadKind::nested_squares, 100},
+    {"mkbool:rational", WorkloadKind::nested_wavy_rings, 100},
     // The rational kernel over Boost's number types: rational's limits (cpp_rational costs
     // about four times mpq_class, so these rows stay within seconds).
     {"mkbool:rational-mp", WorkloadKind::blob, 10'000},
     {"mkbool:rational-mp", WorkloadKind::star, 1'000},
     {"mkbool:rational-mp", WorkloadKind::checkerboard, 1'000},
     {"mkbool:rational-mp", WorkloadKind::nested_squares, 100},
+    {"mkbool:rational-mp", WorkloadKind::nested_wavy_rings, 100},
     {"mkbool:rational-cpp", WorkloadKind::blob, 10'000},
     {"mkbool:rational-cpp", WorkloadKind::star, 1'000},
     {"mkbool:rational-cpp", WorkloadKind::checkerboard, 1'000},
     {"mkbool:rational-cpp", WorkloadKind::nested_squares, 100},
+    {"mkbool:rational-cpp", WorkloadKind::nested_wavy_rings, 100},
     {"mkbool:adaptive", WorkloadKind::checkerboard, 10'000},
     {"mkbool:interval", WorkloadKind::checkerboard, 10'000},
     {"mkbool:cgal", WorkloadKind::checkerboard, 10'000},
@@ -146,6 +152,20 @@ constexpr SizeLimit kSizeLimits[] = {
     {"Clipper", WorkloadKind::nested_squares, 1'000},
     {"ClipperPolyTree", WorkloadKind::nested_squares, 1'000},
     {"CgalEpeck", WorkloadKind::nested_squares, 10'000},
+    // Nested wavy rings: the peers pair every ring's chains or edges with those of the
+    // rings around it. Intersection, 2026-11-29: GEOS 230 ms at 10^2, 25.3 s at 10^3;
+    // Boost.Geometry 945 ms, Clipper and its PolyTree 345 ms at 10^2, each more than 100 s
+    // at 10^3; CGAL 233 ms and 3.5 s. mkbool's kernels that are not exact over double
+    // points keep the box search there (2.3 to 2.7 s at 10^3; `exact` 0.51 s).
+    {"GEOS", WorkloadKind::nested_wavy_rings, 100},
+    {"BoostGeometry", WorkloadKind::nested_wavy_rings, 100},
+    {"Clipper", WorkloadKind::nested_wavy_rings, 100},
+    {"ClipperPolyTree", WorkloadKind::nested_wavy_rings, 100},
+    {"CgalEpeck", WorkloadKind::nested_wavy_rings, 1'000},
+    {"mkbool:double", WorkloadKind::nested_wavy_rings, 1'000},
+    {"mkbool:cgal", WorkloadKind::nested_wavy_rings, 1'000},
+    {"mkbool:adaptive", WorkloadKind::nested_wavy_rings, 1'000},
+    {"mkbool:interval", WorkloadKind::nested_wavy_rings, 1'000},
 };
 
 constexpr std::string_view kRepeatedAtLargest[] = {"GEOS", "BoostGeometry", "Clipper", "mkbool:exact"};

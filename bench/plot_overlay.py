@@ -23,14 +23,14 @@ TABLE_ROWS = [("blob", 100_000), ("blob", 1_000_000), ("blob", 10_000_000), ("st
               ("checkerboard_shared", 10_000), ("checkerboard_shared", 100_000), ("checkerboard_offset", 10_000),
               ("checkerboard_offset", 100_000), ("many_holes", 10_000), ("many_holes", 100_000),
               ("long_spikes", 100_000), ("long_spikes", 1_000_000), ("nested_squares", 1_000),
-              ("nested_squares", 100_000)]
+              ("nested_squares", 100_000), ("nested_wavy_rings", 1_000), ("nested_wavy_rings", 4_000)]
 OPERATIONS = ["intersection", "union", "difference", "xor"]
 # Issue 14's comparison: every operation at these sizes, exact against the peers that return
 # polygons with holes and Clipper.
 EVERY_OP_PEERS = ["GEOS", "BoostGeometry", "Clipper", "ClipperPolyTree"]
 SLOPE_BAR = 1.25  # issue 14: log-log slope of time against size (n + k), 10^3 to 10^6 vertices
 WORKLOADS = ["blob", "star", "checkerboard", "nested_squares", "stripes", "checkerboard_shared",
-             "checkerboard_offset", "many_holes", "long_spikes"]
+             "checkerboard_offset", "many_holes", "long_spikes", "nested_wavy_rings"]
 TABLE_OP = "intersection"
 NAME = re.compile(r"^BM_Overlay<(?P<runner>[^>]+)>/(?P<workload>\w+)/(?P<op>\w+)/(?P<n>\d+)")
 SUMMARY_END = "<!-- end of the summary: the README copies the text above -->"
@@ -198,7 +198,7 @@ def markdown(context, medians, runs, counters, errors):
     out.append(SUMMARY_END)
     out.append("## All runs\n")
     out.append("Median wall time; n is vertices per polygon (blob, star), squares per grid "
-               "(checkerboard) or rings per polygon (nested_squares).\n")
+               "(checkerboard) or annuli per polygon (nested_squares, nested_wavy_rings).\n")
     all_runners = [p for p, _ in PEERS] + kernels
     header = ["workload", "op", "n"] + [label(r) for r in all_runners]
     out.append("| " + " | ".join(header) + " |")

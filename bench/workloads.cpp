@@ -213,6 +213,31 @@ Workload nested_squares(std::size_t n) {
   return finish(WorkloadKind::nested_squares, n, 0, std::move(a), std::move(b));
 }
 
+Workload nested_wavy_rings(std::size_t n) {
+  constexpr int kPoints = 64;
+  const auto ring = [](double cx, double cy, double r, double phase, bool counterclockwise) {
+    Ring out;
+    out.reserve(kPoints);
+    for (int i = 0; i < kPoints; ++i) {
+      const double t = 2 * std::numbers::pi * i / kPoints;
+      const double radius = r + 0.1 * std::sin(7 * t + phase);
+      out.push_back({cx + radius * std::cos(t), cy + radius * std::sin(t)});
+    }
+    if (!counterclockwise) std::reverse(out.begin(), out.end());
+    return out;
+  };
+  MultiPolygon a, b;
+  a.reserve(n);
+  b.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double r = 2 * static_cast<double>(k);
+    const double phase = static_cast<double>(k);
+    a.push_back({ring(0, 0, r + 1.6, phase, true), {ring(0, 0, r + 1.0, phase, false)}});
+    b.push_back({ring(0.7, 0.3, r + 1.6, phase + 1, true), {ring(0.7, 0.3, r + 1.0, phase + 1, false)}});
+  }
+  return finish(WorkloadKind::nested_wavy_rings, n, 0, std::move(a), std::move(b));
+}
+
 Workload make_workload(WorkloadKind kind, std::size_t n) {
   switch (kind) {
     case WorkloadKind::blob: return blob(n);
@@ -224,6 +249,7 @@ Workload make_workload(WorkloadKind kind, std::size_t n) {
     case WorkloadKind::many_holes: return many_holes(n);
     case WorkloadKind::long_spikes: return long_spikes(n);
     case WorkloadKind::nested_squares: return nested_squares(n);
+    case WorkloadKind::nested_wavy_rings: return nested_wavy_rings(n);
   }
   throw std::invalid_argument("unknown workload");
 }

@@ -26,7 +26,8 @@ enum class WorkloadKind : std::uint8_t {
   checkerboard_offset,
   many_holes,
   long_spikes,
-  nested_squares
+  nested_squares,
+  nested_wavy_rings
 };
 
 constexpr std::string_view workload_name(WorkloadKind w) {
@@ -40,14 +41,16 @@ constexpr std::string_view workload_name(WorkloadKind w) {
     case WorkloadKind::many_holes: return "many_holes";
     case WorkloadKind::long_spikes: return "long_spikes";
     case WorkloadKind::nested_squares: return "nested_squares";
+    case WorkloadKind::nested_wavy_rings: return "nested_wavy_rings";
   }
   return "?";
 }
 
-inline constexpr std::array<WorkloadKind, 9> all_workload_kinds{
+inline constexpr std::array<WorkloadKind, 10> all_workload_kinds{
     WorkloadKind::blob,       WorkloadKind::star,        WorkloadKind::stripes,
     WorkloadKind::checkerboard, WorkloadKind::checkerboard_shared, WorkloadKind::checkerboard_offset,
-    WorkloadKind::many_holes, WorkloadKind::long_spikes, WorkloadKind::nested_squares};
+    WorkloadKind::many_holes, WorkloadKind::long_spikes, WorkloadKind::nested_squares,
+    WorkloadKind::nested_wavy_rings};
 
 // The kind whose workload_name is `name`, if any.
 constexpr std::optional<WorkloadKind> workload_named(std::string_view name) {
@@ -109,6 +112,11 @@ Workload long_spikes(std::size_t n);
 // and 4k+5 (k = 0..n-1). Each annulus of B overlaps one of A and touches the next one along
 // the whole of its outer square (collinear edges of opposite direction, shared corners).
 Workload nested_squares(std::size_t n);
+// Contour lines: n annuli per polygon, each between two wavy 64-point rings around one
+// centre (B's moved by (0.7, 0.3)); outside, a ring's segments are far longer than the
+// spacing of the rings, so that boxes of segments and of chains overlap many they never
+// meet.
+Workload nested_wavy_rings(std::size_t n);
 
 Workload make_workload(WorkloadKind kind, std::size_t n);
 

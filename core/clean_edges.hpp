@@ -125,4 +125,55 @@ double estimated_box_pairs(const std::vector<typename K::Point>& pts, std::span<
   return std::isfinite(pairs) && area > 0 ? pairs : HUGE_VAL;
 }
 
+// The same estimate for the boxes the pair search pairs: those of its chains, runs of
+// consecutive edges of one ring that go the same way (detail::Chain). Sampled as above: the
+// chain through each of up to 1024 evenly spread items, each counted 1 / its length times,
+// so that long chains are not counted more often for being sampled more often. Where the
+// edges' boxes are small but the chains' are not (the chains of nested rings: quarters
+// of each ring, whose boxes all nest around one centre), this sees the pairs the search
+// will meet.
+template <Kernel K>
+double estimated_chain_pairs(const std::vector<typename K::Point>& pts, std::span<const SweepItem> items)
+  requires std::is_same_v<typename K::Point, Point>
+{
+  constexpr std::size_t kSample = 1024;
+  const std::size_t n = items.size();
+  if (n == 0) return 0;
+  const std::size_t step = std::max<std::size_t>(1, n / kSample);
+  const auto course = [&](std::size_t i) {
+    const Point& a = pts[static_cast<std::size_t>(items[i].lo)];
+    const Point& b = pts[static_cast<std::size_t>(items[i].hi)];
+    return (items[i].forward ? 1 : 0) | (b.y > a.y ? 2 : (b.y < a.y ? 4 : 0)) | (a.x == b.x ? 8 : 0);
+  };
+  // Item i joins the chain of item i - 1.
+  const auto joins = [&](std::size_t i) {
+    return items[i].continues && items[i].group == items[i - 1].group && course(i) == course(i - 1);
+  };
+  double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+  double chains = 0, swh = 0, sw = 0, sh = 0, sampled = 0;
+  for (std::size_t s = 0; s * step < n; ++s, ++sampled) {
+    // A place in each stretch of `step` items, varied from stretch to stretch (a fixed one
+    // would see only one side of every square when step is a multiple of 4).
+    const std::size_t i = std::min(n - 1, s * step + (s * 2654435761u) % step);
+    std::size_t first = i, last = i + 1;
+    while (first > 0 && last - first < static_cast<std::size_t>(detail::kMaxChain) && joins(first)) --first;
+    while (last < n && last - first < static_cast<std::size_t>(detail::kMaxChain) && joins(last)) ++last;
+    double bx0 = HUGE_VAL, bx1 = -HUGE_VAL, by0 = HUGE_VAL, by1 = -HUGE_VAL;
+    for (const std::size_t k : {first, last - 1}) {
+      for (const int id : {items[k].lo, items[k].hi}) {
+        const Point& q = pts[static_cast<std::size_t>(id)];
+        bx0 = std::min(bx0, q.x), bx1 = std::max(bx1, q.x), by0 = std::min(by0, q.y), by1 = std::max(by1, q.y);
+      }
+    }
+    const double weight = 1.0 / static_cast<double>(last - first);
+    const double w = bx1 - bx0, h = by1 - by0;
+    chains += weight, swh += weight * w * h, sw += weight * w, sh += weight * h;
+    x0 = std::min(x0, bx0), x1 = std::max(x1, bx1), y0 = std::min(y0, by0), y1 = std::max(y1, by1);
+  }
+  const double scale = static_cast<double>(n) / sampled;
+  const double area = (x1 - x0) * (y1 - y0);
+  const double pairs = (chains * scale * swh * scale + sw * sh * scale * scale) / area;
+  return std::isfinite(pairs) && area > 0 ? pairs : HUGE_VAL;
+}
+
 }  // namespace mk

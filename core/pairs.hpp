@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <iterator>
 #include <span>
 #include <cstdint>
@@ -48,7 +49,12 @@ inline void add_sweep_item(std::vector<SweepItem>& items, int src, int dst, int 
   item.continues = continues;
 }
 
-enum class PairSearch : unsigned char { sweep, all_pairs };
+// How candidate pairs are found: `sweep`, by boxes (CandidatePairs), and in the preparation
+// by the sweep over both polygons (core/red_blue.hpp) where boxes would pair too much;
+// `all_pairs`, every pair (the paper's way, for experiments); `red_blue`, as `sweep`, but
+// the preparation's pairs across the polygons always from the sweep over both when each
+// polygon's edges meet only at shared ends (for experiments and tests).
+enum class PairSearch : unsigned char { sweep, all_pairs, red_blue };
 
 namespace detail {
 
@@ -90,7 +96,8 @@ class CandidatePairs {
   // The chains are made on up to `threads` threads (the same chains on any number).
   CandidatePairs(const std::vector<typename K::Point>& pts, const std::vector<int>& x_rank,
                  std::span<const SweepItem> items, bool bipartite, PairSearch search, unsigned threads = 1)
-      : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite), search_(search) {
+      : pts_(pts), x_rank_(x_rank), items_(items), bipartite_(bipartite),
+        search_(search == PairSearch::all_pairs ? PairSearch::all_pairs : PairSearch::sweep) {
     if (search_ == PairSearch::sweep) {
       build_chains(threads);
       plan(threads);
@@ -98,6 +105,15 @@ class CandidatePairs {
   }
 
   std::size_t parts() const { return search_ == PairSearch::sweep ? tasks_.size() : 1; }
+
+  // Stops every part's search once `merges` pairs of chains have been merged in all (the
+  // box search's work, which boxes that overlap without their edges meeting can make
+  // quadratic); exhausted() then says so, and what the parts reported is incomplete.
+  void limit_merges(std::int64_t merges) {
+    budget_.store(merges);
+    limited_ = true;
+  }
+  bool exhausted() const { return exhausted_.load(); }
 
   // Calls f(i, j) for every pair of part `part`. Each part may be searched once.
   template <class F>
@@ -113,10 +129,14 @@ class CandidatePairs {
       return;
     }
     Task& t = tasks_[part];
-    if (t.self) {
-      search_self(t.a, t.axis, 0, f);
-    } else {
-      search_both(t.a, t.b, t.axis, 0, f);
+    try {
+      if (t.self) {
+        search_self(t.a, t.axis, 0, f);
+      } else {
+        search_both(t.a, t.b, t.axis, 0, f);
+      }
+    } catch (const Spent&) {
+      exhausted_.store(true);
     }
     t = Task();
   }
@@ -129,6 +149,7 @@ class CandidatePairs {
     bool self = false;
   };
   enum class Place : unsigned char { below, above, across };
+  struct Spent {};  // thrown out of a part's search when the merges allowed are spent
 
   static constexpr std::size_t kDirect = 128;  // sets this small (or pairs of sets) are paired directly
   static constexpr int kMaxDepth = 96;
@@ -585,9 +606,23 @@ class CandidatePairs {
     return !ky_less(b_max, a_min) && !ky_less(a_max, b_min);
   }
 
+  // Counts one merge against the budget (limit_merges), in batches taken from the shared
+  // count; throws Spent once it is spent, here or in another part.
+  void spend() const {
+    constexpr std::int64_t kBatch = 1024;
+    thread_local std::int64_t unpaid = 0;
+    if (++unpaid < kBatch) return;
+    unpaid = 0;
+    if (budget_.fetch_sub(kBatch) < kBatch || exhausted_.load(std::memory_order_relaxed)) {
+      exhausted_.store(true);
+      throw Spent{};
+    }
+  }
+
   // Segment pairs of chains c and d whose boxes overlap, by merging them in x.
   template <class F>
   void merge(int cc, int dc, F& f) const {
+    if (limited_) spend();
     const detail::Chain& c = chains_[cc];
     const detail::Chain& d = chains_[dc];
     if (c.last - c.first == 1 && d.last - d.first == 1) {  // two segments: their boxes meet
@@ -624,6 +659,9 @@ class CandidatePairs {
   std::vector<Box> boxes_;  // per chain
   std::unique_ptr<Seg[]> segs_;  // one per item, in chain order (a chain's segments by x)
   mutable std::vector<Task> tasks_;
+  bool limited_ = false;
+  mutable std::atomic<std::int64_t> budget_{0};
+  mutable std::atomic<bool> exhausted_{false};
 };
 
 // Calls f(i, j) for every candidate pair (see CandidatePairs), part after part.

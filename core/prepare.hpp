@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <numeric>
 #include <span>
@@ -22,6 +23,7 @@
 #include "core/error.hpp"
 #include "core/pairs.hpp"
 #include "core/parallel.hpp"
+#include "core/red_blue.hpp"
 #include "core/sorting.hpp"
 #include "predicates/segments.hpp"
 
@@ -211,6 +213,15 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
 // otherwise (step 3 then searches the vertex-complete edges). One search instead of three:
 // the chains of every edge are made once. The errors are those of make_vertex_complete, A's
 // first.
+// When the preparation's pair search tries boxes within a budget before the sweep over both
+// polygons (core/red_blue.hpp): from this many edges, when the chains' boxes are estimated to
+// make more than kTrialChainPairs pairs per edge (estimated_chain_pairs), and the budget,
+// kMergesPerEdge merges of chains per edge. Measured (bench/README.md, "Nested wavy rings"):
+// the sweep costs about what 4 to 8 merges per edge do.
+inline constexpr std::size_t kRedBlueFrom = 4096;
+inline constexpr double kTrialChainPairs = 8;
+inline constexpr double kMergesPerEdge = 8;
+
 template <Kernel K>
 void make_both_vertex_complete(Arrangement<K>& arr, std::array<std::vector<IdRing>, 2>& rings, PairSearch search,
                                unsigned threads) {
@@ -245,49 +256,90 @@ void make_both_vertex_complete(Arrangement<K>& arr, std::array<std::vector<IdRin
   // shared ends (nothing to insert, nothing crossing), tried when their boxes would make
   // many pairs (a star's spikes: millions, against a sweep's n log n).
   bool bipartite = false;
+  int clean = -1;  // whether each polygon's edges meet only at shared ends: -1 not known yet
+  bool trial = false;  // boxes first, within a budget of merges, then the sweep
+  const std::array<std::span<const SweepItem>, 2> own{items.subspan(0, static_cast<std::size_t>(na)), items.subspan(static_cast<std::size_t>(na))};
+  const auto find_clean = [&] {
+    std::array<bool, 2> each{false, false};
+    run_tasks(threads_for(items.size(), threads), 2, [&](std::size_t g) { each[g] = edges_meet_only_at_ends<K>(pts, own[g]); });
+    clean = each[0] && each[1] ? 1 : 0;
+  };
   if constexpr (std::is_same_v<typename K::Point, Point>) {
-    const std::array<std::span<const SweepItem>, 2> own{items.subspan(0, static_cast<std::size_t>(na)), items.subspan(static_cast<std::size_t>(na))};
     constexpr double kSweepFrom = 32;  // box pairs per edge
     const auto many = [&](int g) {
       return own[g].size() >= 64 && estimated_box_pairs<K>(pts, own[g]) > kSweepFrom * static_cast<double>(own[g].size());
     };
-    if (search == PairSearch::sweep && many(0) && many(1)) {
-      std::array<bool, 2> clean{false, false};
-      run_tasks(threads_for(items.size(), threads), 2, [&](std::size_t g) { clean[g] = edges_meet_only_at_ends<K>(pts, own[g]); });
-      bipartite = clean[0] && clean[1];
+    if (search != PairSearch::all_pairs && many(0) && many(1)) {
+      find_clean();
+      bipartite = clean == 1;
+    }
+    if constexpr (K::is_exact) {
+      const double chain_pairs = search == PairSearch::sweep && items.size() >= kRedBlueFrom ? estimated_chain_pairs<K>(pts, items) : 0.0;
+      trial = chain_pairs > kTrialChainPairs * static_cast<double>(items.size());
     }
   }
-  CandidatePairs<K> pairs(pts, arr.x_rank, items, bipartite, search, threads);
   struct Found {
     std::array<EdgeInsertions, 2> inserted;
     std::array<std::pair<int, int>, 2> crossing{{{-1, -1}, {-1, -1}}};
     typename EarlyIntersections<typename K::Vertex>::Part early;
   };
-  std::vector<Found> found(pairs.parts());
-  run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
-    Found& out = found[part];
-    pairs.for_each_in_part(part, [&](int i, int j) {
-      if (i > j) std::swap(i, j);  // A's items come first
-      const SweepItem& a = items[i];
-      const SweepItem& b = items[j];
-      if (a.group == b.group) {
-        const int g = a.group;
-        relate_own_edges<K>(pts, a, b, i - first_item[g], j - first_item[g], out.inserted[g], out.crossing[g]);
-        return;
-      }
-      // An edge of A and one of B, as step 3 relates them.
-      const int jb = j - na;
-      relate_edges_across<K>(
-          pts, a.lo, a.hi, b.lo, b.hi,
-          [&] {
-            auto& c = out.early.crossings.emplace_back();
-            c.a = i;
-            c.b = jb;
-            c.vertex = K::crossing(pts[a.lo], pts[a.hi], pts[b.lo], pts[b.hi]);
-          },
-          [&](int p) { out.early.inserted[0].emplace_back(i, p); }, [&](int p) { out.early.inserted[1].emplace_back(jb, p); });
+  // Relates items i and j (either order) into `out`.
+  const auto relate = [&](Found& out, int i, int j) {
+    if (i > j) std::swap(i, j);  // A's items come first
+    const SweepItem& a = items[i];
+    const SweepItem& b = items[j];
+    if (a.group == b.group) {
+      const int g = a.group;
+      relate_own_edges<K>(pts, a, b, i - first_item[g], j - first_item[g], out.inserted[g], out.crossing[g]);
+      return;
+    }
+    // An edge of A and one of B, as step 3 relates them.
+    const int jb = j - na;
+    relate_edges_across<K>(
+        pts, a.lo, a.hi, b.lo, b.hi,
+        [&] {
+          auto& c = out.early.crossings.emplace_back();
+          c.a = i;
+          c.b = jb;
+          c.vertex = K::crossing(pts[a.lo], pts[a.hi], pts[b.lo], pts[b.hi]);
+        },
+        [&](int p) { out.early.inserted[0].emplace_back(i, p); }, [&](int p) { out.early.inserted[1].emplace_back(jb, p); });
+  };
+  std::vector<Found> found;
+  // The search by boxes, stopped after `merges` merges of chains when not negative; whether
+  // it finished.
+  const auto search_boxes = [&](std::int64_t merges) {
+    CandidatePairs<K> pairs(pts, arr.x_rank, items, bipartite, search, threads);
+    if (merges >= 0) pairs.limit_merges(merges);
+    found.assign(pairs.parts(), Found{});
+    run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
+      Found& out = found[part];
+      pairs.for_each_in_part(part, [&](int i, int j) { relate(out, i, j); });
     });
-  });
+    return !pairs.exhausted();
+  };
+  bool searched = false;  // `found` holds every pair's findings
+  if constexpr (std::is_same_v<typename K::Point, Point> && K::is_exact) {
+    // Where the chains' boxes overlap many others, the boxes are tried within a budget of
+    // merges; when it runs out and each polygon meets itself only at shared ends, the sweep
+    // over both (core/red_blue.hpp) gives the pairs that meet, at O((n + k) log n).
+    if (search == PairSearch::red_blue || trial) {
+      searched = search != PairSearch::red_blue && search_boxes(static_cast<std::int64_t>(kMergesPerEdge * static_cast<double>(items.size())));
+      if (!searched && clean < 0) find_clean();
+      if (!searched && clean == 1) {
+        bipartite = true;
+        const std::vector<std::pair<int, int>> meeting = red_blue_meeting_pairs<K>(pts, items);
+        const unsigned t = threads_for(meeting.size(), threads);
+        found.assign(t, Found{});
+        run_tasks(t, t, [&](std::size_t part) {
+          const std::size_t from = meeting.size() * part / t, to = meeting.size() * (part + 1) / t;
+          for (std::size_t k = from; k < to; ++k) relate(found[part], meeting[k].first, meeting[k].second);
+        });
+        searched = true;
+      }
+    }
+  }
+  if (!searched) search_boxes(-1);
   std::array<EdgeInsertions, 2> inserted;
   std::array<std::pair<int, int>, 2> crossing{{{-1, -1}, {-1, -1}}};
   for (Found& f : found) {

@@ -21,6 +21,7 @@
 #include "core/locator.hpp"
 #include "core/pairs.hpp"
 #include "core/prepare.hpp"
+#include "core/red_blue.hpp"
 #include "core/to_output.hpp"
 #include "generators.hpp"
 #include "oracle.hpp"
@@ -103,11 +104,15 @@ bool boxes_meet(const Items& s, const SweepItem& a, const SweepItem& b) {
   return p[a.lo].x <= p[b.hi].x && p[b.lo].x <= p[a.hi].x && a0 <= b1 && b0 <= a1;
 }
 
-TEST(CandidatePairs, ReportEveryMeetingPairOnceAndNoPairOfApartBoxes) {
-  const std::uint64_t seed = 20261125;
+// The segment soups drawn from `seed`, which is printed.
+std::vector<Polygon> soups_from(std::uint64_t seed) {
   std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
   std::mt19937_64 rng(seed);
-  const std::vector<Polygon> soups = segment_soups(rng);
+  return segment_soups(rng);
+}
+
+TEST(CandidatePairs, ReportEveryMeetingPairOnceAndNoPairOfApartBoxes) {
+  const std::vector<Polygon> soups = soups_from(20261125);
   int checked = 0;
   for (std::size_t i = 0; i < soups.size(); ++i) {
     for (std::size_t j = 0; j < soups.size(); ++j) {
@@ -305,6 +310,26 @@ Polygon wavy_disc(int n, int lobes, double cx, double cy) {
   return Polygon{{r}, PolygonType::island};
 }
 
+// Contour-like nested rings: `n` annuli of two `m`-point wavy rings each, around (cx, cy),
+// their segments much longer than the rings' spacing at the outside, so that boxes of
+// segments and of chains overlap many others that they never meet.
+Polygon nested_wavy_rings(int n, int m, double cx, double cy, double phase) {
+  Polygon p;
+  for (int k = 0; k < n; ++k) {
+    for (const double r : {2.0 * k + 1.6, 2.0 * k + 1.0}) {
+      Ring ring;
+      for (int i = 0; i < m; ++i) {
+        const double t = 2 * std::numbers::pi * i / m;
+        const double radius = r + 0.1 * std::sin(7 * t + phase + k);
+        ring.push_back({cx + radius * std::cos(t), cy + radius * std::sin(t)});
+      }
+      if (r < 2.0 * k + 1.5) std::reverse(ring.begin(), ring.end());  // the inner ring: a hole
+      p.rings.push_back(ring);
+    }
+  }
+  return p;
+}
+
 std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> large_inputs() {
   std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> out;
   out.push_back({"blob", {wavy_disc(12000, 5, 0, 0), wavy_disc(12000, 5, 30, 10)}});
@@ -331,6 +356,9 @@ std::vector<std::pair<std::string, std::pair<Polygon, Polygon>>> large_inputs() 
     return Polygon{{r}, PolygonType::island};
   };
   out.push_back({"star", {star(9000, 0, 0), star(9000, 32, 0)}});
+  // The preparation's box search runs out of its budget here and the sweep over both takes
+  // over (core/red_blue.hpp).
+  out.push_back({"nested_wavy_rings", {nested_wavy_rings(160, 32, 0, 0, 0), nested_wavy_rings(160, 32, 0.7, 0.3, 1)}});
   return out;
 }
 
@@ -722,6 +750,182 @@ TEST(CrossingIds, OnePointPerCrossingOfCoincidingEdgesAmongManyCrossings) {
     EXPECT_EQ(i.stats.crossings, expected);
     EXPECT_EQ(area(result_rings(u)) + area(result_rings(i)), sum);
   }
+}
+
+// Whether closed segments a b and c d have a point in common, from the signs of four
+// orientations (exact) and, for collinear ones, whether their ranges overlap.
+bool segments_meet(const std::vector<Point>& p, int a, int b, int c, int d) {
+  const Sign o1 = K::orient2d(p[a], p[b], p[c]), o2 = K::orient2d(p[a], p[b], p[d]);
+  const Sign o3 = K::orient2d(p[c], p[d], p[a]), o4 = K::orient2d(p[c], p[d], p[b]);
+  const auto between = [&](int u, int v, int q) {  // q on the line of u v: within the segment?
+    return std::min(p[u].x, p[v].x) <= p[q].x && p[q].x <= std::max(p[u].x, p[v].x) &&
+           std::min(p[u].y, p[v].y) <= p[q].y && p[q].y <= std::max(p[u].y, p[v].y);
+  };
+  if (o1 != Sign::zero && o1 == o2) return false;
+  if (o3 != Sign::zero && o3 == o4) return false;
+  if (o1 != Sign::zero || o3 != Sign::zero) {
+    // Not all collinear: they cross, or an end lies on the other segment.
+    if (o1 != Sign::zero && o2 != Sign::zero && o3 != Sign::zero && o4 != Sign::zero) return true;
+    return (o1 == Sign::zero && between(a, b, c)) || (o2 == Sign::zero && between(a, b, d)) ||
+           (o3 == Sign::zero && between(c, d, a)) || (o4 == Sign::zero && between(c, d, b));
+  }
+  return between(a, b, c) || between(a, b, d) || between(c, d, a) || between(c, d, b);
+}
+
+// Segments of two colours on a small grid (verticals, collinear overlaps, ends on other
+// segments, shared ends, crossings at grid points and between them), each colour drawn so
+// that its own segments meet only at shared ends, without overlapping.
+Items grid_red_blue(std::mt19937_64& rng, int grid, int per_colour) {
+  std::uniform_int_distribution<int> coord(0, grid);
+  std::vector<std::array<Point, 2>> segs[2];
+  for (int g = 0; g < 2; ++g) {
+    for (int tries = 0; static_cast<int>(segs[g].size()) < per_colour && tries < 50 * per_colour; ++tries) {
+      const Point u{static_cast<double>(coord(rng)), static_cast<double>(coord(rng))};
+      const Point w{static_cast<double>(coord(rng)), static_cast<double>(coord(rng))};
+      if (u == w) continue;
+      bool ok = true;
+      for (const auto& t : segs[g]) {
+        const std::vector<Point> q{u, w, t[0], t[1]};
+        if (!segments_meet(q, 0, 1, 2, 3)) continue;
+        // Meeting only at a shared end: one end in common, and the other two not on one ray.
+        const int shared = (u == t[0] || u == t[1]) + (w == t[0] || w == t[1]);
+        if (shared != 1) {
+          ok = false;
+          break;
+        }
+        const Point e = (u == t[0] || u == t[1]) ? u : w;
+        const Point s_other = e == u ? w : u;
+        const Point t_other = e == t[0] ? t[1] : t[0];
+        const bool overlap = K::orient2d(e, s_other, t_other) == Sign::zero &&
+                             (s_other.x - e.x) * (t_other.x - e.x) + (s_other.y - e.y) * (t_other.y - e.y) > 0;
+        if (overlap) {
+          ok = false;
+          break;
+        }
+      }
+      if (ok) segs[g].push_back({u, w});
+    }
+  }
+  Items out;
+  std::vector<Point> all;
+  for (int g = 0; g < 2; ++g) {
+    for (const auto& t : segs[g]) all.insert(all.end(), t.begin(), t.end());
+  }
+  const auto less = [](const Point& u, const Point& w) { return u.x != w.x ? u.x < w.x : u.y < w.y; };
+  std::sort(all.begin(), all.end(), less);
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  out.pts = all;
+  out.x_rank.resize(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) out.x_rank[i] = i == 0 ? 0 : out.x_rank[i - 1] + (all[i].x != all[i - 1].x);
+  const auto id = [&](const Point& q) { return static_cast<int>(std::lower_bound(all.begin(), all.end(), q, less) - all.begin()); };
+  for (int g = 0; g < 2; ++g) {
+    for (const auto& t : segs[g]) out.items.push_back(sweep_item(id(t[0]), id(t[1]), g, false));
+  }
+  return out;
+}
+
+// Whether the items of each group (A's first) meet only at shared ends, as the sweep needs.
+bool each_group_clean(const Items& s) {
+  const auto na = static_cast<std::size_t>(std::count_if(s.items.begin(), s.items.end(), [](const SweepItem& it) { return it.group == 0; }));
+  const std::span<const SweepItem> all(s.items);
+  return edges_meet_only_at_ends<K>(s.pts, all.first(na)) && edges_meet_only_at_ends<K>(s.pts, all.subspan(na));
+}
+
+// The sweep's pairs against every red-blue pair that meets, found pair by pair.
+void expect_meeting_pairs(const Items& s, const std::string& name) {
+  const auto found = red_blue_meeting_pairs<K>(s.pts, s.items);
+  std::vector<std::pair<int, int>> expected;
+  for (int a = 0; a < static_cast<int>(s.items.size()); ++a) {
+    for (int b = a + 1; b < static_cast<int>(s.items.size()); ++b) {
+      const SweepItem& x = s.items[a];
+      const SweepItem& y = s.items[b];
+      if (x.group != y.group && segments_meet(s.pts, x.lo, x.hi, y.lo, y.hi)) expected.emplace_back(a, b);
+    }
+  }
+  EXPECT_EQ(found, expected) << name;
+}
+
+TEST(RedBlueSweep, FindsEveryPairThatMeetsAndNoOtherOnAGrid) {
+  const std::uint64_t seed = 20261129;
+  std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+  std::mt19937_64 rng(seed);
+  int pairs = 0;
+  for (int round = 0; round < 400; ++round) {
+    const int grid = 3 + round % 6;
+    const Items s = grid_red_blue(rng, grid, 4 + round % 25);
+    ASSERT_TRUE(each_group_clean(s)) << "round " << round;
+    expect_meeting_pairs(s, "grid round " + std::to_string(round));
+    pairs += static_cast<int>(red_blue_meeting_pairs<K>(s.pts, s.items).size());
+  }
+  EXPECT_GT(pairs, 4000);  // the rounds meet in many ways, not a few
+}
+
+TEST(RedBlueSweep, FindsEveryPairThatMeetsBetweenRings) {
+  const std::vector<Polygon> soups = soups_from(20261130);
+  int checked = 0;
+  for (std::size_t i = 0; i < soups.size(); ++i) {
+    for (std::size_t j = 0; j < soups.size(); ++j) {
+      const Items s = items_of(soups[i], soups[j]);
+      if (!each_group_clean(s)) continue;
+      expect_meeting_pairs(s, "soups " + std::to_string(i) + " " + std::to_string(j));
+      ++checked;
+    }
+  }
+  const Items wavy = items_of(nested_wavy_rings(12, 24, 0, 0, 0), nested_wavy_rings(12, 24, 0.7, 0.3, 1));
+  expect_meeting_pairs(wavy, "nested wavy rings");
+  EXPECT_GT(checked, 20);
+}
+
+TEST(CandidatePairs, ABudgetOfMergesStopsTheSearchAndSaysSo) {
+  const Items s = items_of(nested_wavy_rings(60, 32, 0, 0, 0), nested_wavy_rings(60, 32, 0.7, 0.3, 1));
+  const auto run = [&](std::int64_t merges, std::size_t& count) {
+    CandidatePairs<K> pairs(s.pts, s.x_rank, s.items, true, PairSearch::sweep, 2);
+    if (merges >= 0) pairs.limit_merges(merges);
+    count = 0;
+    for (std::size_t part = 0; part < pairs.parts(); ++part) pairs.for_each_in_part(part, [&](int, int) { ++count; });
+    return pairs.exhausted();
+  };
+  std::size_t all = 0, some = 0, within = 0;
+  EXPECT_FALSE(run(-1, all));
+  EXPECT_TRUE(run(4096, some));
+  EXPECT_LT(some, all);
+  EXPECT_FALSE(run(std::int64_t{1} << 40, within));
+  EXPECT_EQ(within, all);
+}
+
+// The operation with the preparation's pairs from the sweep over both polygons against the
+// paper's every-pair search: the same result cycles, vertex by vertex, exactly.
+TEST(RedBlueSweep, OperationAgreesWithEveryPairSearch) {
+  std::mt19937_64 rng(20261131);
+  std::vector<std::pair<Polygon, Polygon>> cases;
+  const std::vector<Polygon> soups = segment_soups(rng);
+  for (std::size_t i = 0; i < soups.size(); ++i) cases.push_back({soups[i], soups[(i + 3) % soups.size()]});
+  for (int k = 0; k < 20; ++k) cases.push_back({random_polygon(rng, true), random_polygon(rng, true)});
+  cases.push_back({nested_wavy_rings(10, 20, 0, 0, 0), nested_wavy_rings(10, 20, 0.7, 0.3, 1)});
+  cases.push_back({nested_wavy_rings(10, 20, 0, 0, 0), nested_wavy_rings(10, 20, 0, 0, 0)});  // the same rings
+  const auto text = [](const BooleanResult<K>& r) {
+    std::string t;
+    for (const auto& c : r.cycles) {
+      t += c.type == PolygonType::island ? "I" : "H";
+      for (const int v : c.vertices) {
+        const auto e = K::exact_coordinates(r.vertex(v));
+        t += " " + e[0] + "," + e[1];
+      }
+      t += "\n";
+    }
+    return t;
+  };
+  int compared = 0;
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference, Operation::symmetric_difference}) {
+      const auto a = to_kernel_polygon<K>(cases[c].first), b = to_kernel_polygon<K>(cases[c].second);
+      const auto every = boolean_op<K>(a, b, Options{op, true, EfOrganisation::hash, PairSearch::all_pairs});
+      const auto swept = boolean_op<K>(a, b, Options{op, true, EfOrganisation::hash, PairSearch::red_blue});
+      EXPECT_EQ(text(every), text(swept)) << "case " << c << " " << operation_name(op);
+      compared += !every.cycles.empty();
+    }
+  }
+  EXPECT_GT(compared, 80);
 }
 
 }  // namespace
