@@ -26,6 +26,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <iterator>
 #include <memory_resource>
@@ -83,8 +84,11 @@ struct RedBlueBelow {
 
 }  // namespace detail
 
-// Every pair (i, j) of items, i of group 0 and j of group 1, that meet (cross, touch or
-// overlap), each once, in increasing order.
+// Every pair (i, j) of items, i of group 0 and j of group 1, that have a point in common
+// other than an end of both (they cross, an end of one lies on the other, or they overlap),
+// each once, in increasing order. Left out: two that meet only at a shared end, and the same
+// segment in both groups; step 3's relation of such a pair says nothing
+// (relate_edges_across).
 template <Kernel K>
   requires(std::is_same_v<typename K::Point, Point> && K::is_exact)
 std::vector<std::pair<int, int>> red_blue_meeting_pairs(const std::vector<Point>& pts, std::span<const SweepItem> items) {
@@ -159,6 +163,7 @@ std::vector<std::pair<int, int>> red_blue_meeting_pairs(const std::vector<Point>
   std::vector<int> verticals;  // vertical edges reaching the current point (they lie on its x)
   std::vector<int> through;    // edges on the line through the current point
   std::vector<int> at;         // every edge through the current point
+  std::array<std::vector<int>, 2> passing, ending;  // of A and of B: through p, and ending or starting there
   for (std::size_t pi = 0; pi < keys; ++pi) {
     if (by_lo.begin[pi] == by_lo.begin[pi + 1] && by_hi.begin[pi] == by_hi.begin[pi + 1]) continue;
     const int p = static_cast<int>(pi);
@@ -180,7 +185,10 @@ std::vector<std::pair<int, int>> red_blue_meeting_pairs(const std::vector<Point>
       const int v = by_lo.order[static_cast<std::size_t>(k)];
       if (!vertical(v)) continue;
       const Point& top = pts[static_cast<std::size_t>(hi(v))];
-      for (It it = first; it != line.end() && side(*it, top) != Sign::negative; ++it) report(v, it->edge);
+      for (It it = first; it != line.end() && side(*it, top) != Sign::negative; ++it) {
+        const int t_end = hi(it->edge);
+        if (t_end != p && t_end != hi(v)) report(v, it->edge);  // not at an end of both
+      }
       verticals.push_back(v);
     }
     // The edges through p: on the line, then starting, then vertical; every two meet at p.
@@ -193,10 +201,23 @@ std::vector<std::pair<int, int>> red_blue_meeting_pairs(const std::vector<Point>
       const int e = by_lo.order[static_cast<std::size_t>(k)];
       if (!vertical(e)) at.push_back(e);
     }
-    const std::size_t fresh_from = through.size();
+    const std::size_t were_on_line = through.size();
     at.insert(at.end(), verticals.begin(), verticals.end());
-    for (std::size_t i = 0; i < at.size(); ++i) {
-      for (std::size_t j = i + 1; j < at.size(); ++j) report(at[i], at[j]);
+    // Each of A's with each of B's, but two that both end here: they meet at this end
+    // alone, or along a segment whose other end is an event where one passes (or they are
+    // the same segment, which relates nothing). An edge of a polygon passes through p only
+    // where no other edge of that polygon meets p, so the pairs are as many as the edges
+    // (a point where thousands of parts of both polygons meet, a fan's apex, costs
+    // thousands, not millions).
+    for (auto& list : passing) list.clear();
+    for (auto& list : ending) list.clear();
+    for (const int e : at) (lo(e) == p || hi(e) == p ? ending : passing)[static_cast<std::size_t>(group(e))].push_back(e);
+    for (const int a : passing[0]) {
+      for (const int b : passing[1]) report(a, b);
+      for (const int b : ending[1]) report(a, b);
+    }
+    for (const int a : ending[0]) {
+      for (const int b : passing[1]) report(a, b);
     }
     // Off the line, then back in the order after p: those passing p, and those starting.
     for (const int e : through) {
@@ -206,7 +227,7 @@ std::vector<std::pair<int, int>> red_blue_meeting_pairs(const std::vector<Point>
     std::size_t inserted = 0;
     for (std::size_t k = 0; k < at.size() - verticals.size(); ++k) {
       const int e = at[k];
-      if (k < fresh_from && hi(e) == p) continue;  // ends here
+      if (k < were_on_line && hi(e) == p) continue;  // ends here
       insert(e);
       ++inserted;
     }
