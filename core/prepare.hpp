@@ -207,12 +207,6 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
   insert_touching_points(rings, inserted, static_cast<int>(items.size()));
 }
 
-// Both polygons made vertex-complete by one pair search over the edges of both, which also
-// finds what step 3 looks for, the crossings and touching points between A and B: kept in
-// arr.early when no point had to be inserted (every edge then is one of step 3's), dropped
-// otherwise (step 3 then searches the vertex-complete edges). One search instead of three:
-// the chains of every edge are made once. The errors are those of make_vertex_complete, A's
-// first.
 // When the preparation's pair search tries boxes within a budget before the sweep over both
 // polygons (core/red_blue.hpp): from this many edges, when the chains' boxes are estimated to
 // make more than kTrialChainPairs pairs per edge (estimated_chain_pairs), and the budget,
@@ -222,6 +216,12 @@ inline constexpr std::size_t kRedBlueFrom = 4096;
 inline constexpr double kTrialChainPairs = 8;
 inline constexpr double kMergesPerEdge = 8;
 
+// Both polygons made vertex-complete by one pair search over the edges of both, which also
+// finds what step 3 looks for, the crossings and touching points between A and B: kept in
+// arr.early when no point had to be inserted (every edge then is one of step 3's), dropped
+// otherwise (step 3 then searches the vertex-complete edges). One search instead of three:
+// the chains of every edge are made once. The errors are those of make_vertex_complete, A's
+// first.
 template <Kernel K>
 void make_both_vertex_complete(Arrangement<K>& arr, std::array<std::vector<IdRing>, 2>& rings, PairSearch search,
                                unsigned threads) {
@@ -327,7 +327,6 @@ void make_both_vertex_complete(Arrangement<K>& arr, std::array<std::vector<IdRin
       searched = search != PairSearch::red_blue && search_boxes(static_cast<std::int64_t>(kMergesPerEdge * static_cast<double>(items.size())));
       if (!searched && clean < 0) find_clean();
       if (!searched && clean == 1) {
-        bipartite = true;
         const std::vector<std::pair<int, int>> meeting = red_blue_meeting_pairs<K>(pts, items);
         const unsigned t = threads_for(meeting.size(), threads);
         found.assign(t, Found{});
