@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -122,10 +123,21 @@ class HashEdgeTable {
   // e.from's chain both finds a copy of e and reaches the chain's end, where e is linked.
   void insert(EfEntry e, bool regular) {
     e.alive = true;
-    int* link = &head_[static_cast<std::size_t>(e.from)];
-    for (; *link >= 0; link = &next_[static_cast<std::size_t>(*link)]) {
-      const EfEntry& en = entries_[static_cast<std::size_t>(*link)];
-      if (en.to == e.to && en.alive && run_[static_cast<std::size_t>(*link)] < 0) return;
+    int* link = nullptr;
+    if (is_long(e.from)) {
+      if (find(e.from, e.to) != nullptr) return;
+      link = &next_[static_cast<std::size_t>(long_chains_.tail.at(e.from))];
+    } else {
+      int length = 0;
+      for (link = &head_[static_cast<std::size_t>(e.from)]; *link >= 0; link = &next_[static_cast<std::size_t>(*link)]) {
+        const EfEntry& en = entries_[static_cast<std::size_t>(*link)];
+        if (en.to == e.to && en.alive && run_[static_cast<std::size_t>(*link)] < 0) return;
+        ++length;
+      }
+      if (length >= kLongChain) {
+        index_long_chain(e.from);
+        link = &next_[static_cast<std::size_t>(long_chains_.tail.at(e.from))];
+      }
     }
     if (regular) {
       if (EfEntry* opp = find(e.to, e.from)) {
@@ -134,6 +146,14 @@ class HashEdgeTable {
       }
     }
     append(link, e, -1);
+  }
+
+  // Whether v's chain is long (kLongChain entries or more when an entry was last added):
+  // such a chain is indexed by the entries' `to` as well, and step 6 orders it by angle.
+  static constexpr int kLongChain = 32;
+  bool is_long(int v) const {
+    const auto w = static_cast<std::size_t>(v) / 64;
+    return w < long_chains_.bits.size() && ((long_chains_.bits[w] >> (v % 64)) & 1) != 0;
   }
 
   // Room for `n` inner vertices of runs, each written once by set_inner before the run that
@@ -152,7 +172,16 @@ class HashEdgeTable {
   // and no opposite.
   void insert_run(const EfEntry& e, std::size_t begin, std::size_t count) {
     int* link = &head_[static_cast<std::size_t>(e.from)];
-    while (*link >= 0) link = &next_[static_cast<std::size_t>(*link)];
+    if (is_long(e.from)) {
+      link = &next_[static_cast<std::size_t>(long_chains_.tail.at(e.from))];
+    } else {
+      int length = 0;
+      for (; *link >= 0; link = &next_[static_cast<std::size_t>(*link)]) ++length;
+      if (length >= kLongChain) {
+        index_long_chain(e.from);
+        link = &next_[static_cast<std::size_t>(long_chains_.tail.at(e.from))];
+      }
+    }
     runs_.push_back({begin, count});
     append(link, e, static_cast<int>(runs_.size()) - 1);
   }
@@ -202,6 +231,12 @@ class HashEdgeTable {
 
  private:
   EfEntry* find(int from, int to) {
+    if (is_long(from)) {
+      const auto it = long_chains_.by_key.find(key(from, to));
+      if (it == long_chains_.by_key.end()) return nullptr;
+      EfEntry& en = entries_[static_cast<std::size_t>(it->second)];
+      return en.alive ? &en : nullptr;
+    }
     for (int i = head_[static_cast<std::size_t>(from)]; i >= 0; i = next_[static_cast<std::size_t>(i)]) {
       EfEntry& en = entries_[static_cast<std::size_t>(i)];
       if (en.to == to && en.alive && run_[static_cast<std::size_t>(i)] < 0) return &en;
@@ -220,6 +255,24 @@ class HashEdgeTable {
     made.alive = true;
     next_.push_back(-1);
     run_.push_back(r);
+    if (is_long(e.from)) {
+      const int i = static_cast<int>(entries_.size()) - 1;
+      long_chains_.tail[e.from] = i;
+      if (r < 0) long_chains_.by_key[key(e.from, e.to)] = i;
+    }
+  }
+  static std::uint64_t key(int from, int to) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) | static_cast<std::uint32_t>(to);
+  }
+  // Marks v's chain long and indexes it: each (from, to) of a single fragment to its last
+  // entry (an earlier one with the same key is dead: insert adds none beside a live one).
+  void index_long_chain(int v) {
+    if (long_chains_.bits.empty()) long_chains_.bits.assign(head_.size() / 64 + 1, 0);
+    long_chains_.bits[static_cast<std::size_t>(v) / 64] |= std::uint64_t{1} << (v % 64);
+    for (int i = head_[static_cast<std::size_t>(v)]; i >= 0; i = next_[static_cast<std::size_t>(i)]) {
+      if (run_[static_cast<std::size_t>(i)] < 0) long_chains_.by_key[key(v, entries_[static_cast<std::size_t>(i)].to)] = i;
+      long_chains_.tail[v] = i;
+    }
   }
   std::vector<int> head_;         // per vertex: its first entry, or -1
   std::vector<int> next_;         // per entry: the next entry from the same vertex, or -1
@@ -229,6 +282,13 @@ class HashEdgeTable {
   struct InnerDirection {
     int from, to;
   };
+  // The long chains: a bit per vertex (allocated at the first), each one's last entry, and
+  // their single fragments by (from, to).
+  struct LongChains {
+    std::vector<std::uint64_t> bits;
+    std::unordered_map<int, int> tail;
+    std::unordered_map<std::uint64_t, int> by_key;
+  } long_chains_;
   std::vector<int> run_;  // per entry: its run, or -1 for one fragment
   std::vector<std::pair<std::size_t, std::size_t>> runs_;  // per run: its inner vertices (first, count)
   std::unique_ptr<int[]> inner_;                          // the runs' inner vertices

@@ -12,6 +12,7 @@
 
 #include "core/arrangement.hpp"
 #include "core/buckets.hpp"
+#include "kernel/kernel.hpp"
 #include "predicates/directions.hpp"
 
 namespace mk {
@@ -98,6 +99,7 @@ class FragmentEndTable {
       slot_[static_cast<std::size_t>(v)] = kGrouped - static_cast<int>(group_begin_.size());
       group_begin_.push_back(static_cast<int>(codes_.size()));
     }
+    index_many_ends();
   }
 
   class Iterator {
@@ -141,6 +143,83 @@ class FragmentEndTable {
     const auto g = static_cast<std::size_t>(kGrouped - s);
     return group_begin_[g] - group_begin_[g - 1];
   }
+  // Vertices with kManyEnds ends or more (a fan's apex, where thousands of one polygon's
+  // fragments meet) are indexed as well: scanning their ends once for each fragment through
+  // them would cost the square of their degree. many(v): v's index among them, or -1.
+  static constexpr int kManyEnds = 32;
+  int many(int v) const {
+    const int s = slot_[static_cast<std::size_t>(v)];
+    return s >= kUnreached ? -1 : many_of_group_[static_cast<std::size_t>(kGrouped - s)];
+  }
+  // fragments_along at such a vertex: the (leaving, arriving) ends whose fragment's other
+  // vertex is w, by binary search among its ends sorted by that vertex.
+  std::pair<int, int> along(int m, int w) const {
+    const auto first = by_far_.begin() + many_begin_[static_cast<std::size_t>(m)];
+    const auto last = by_far_.begin() + many_begin_[static_cast<std::size_t>(m) + 1];
+    const auto [lo, hi] = std::equal_range(first, last, FarEnd{w, 0}, [](const FarEnd& a, const FarEnd& b) { return a.far < b.far; });
+    int same = 0;
+    int opposite = 0;
+    for (auto it = lo; it != hi; ++it) ++((it->code & 1) != 0 ? opposite : same);
+    return {same, opposite};
+  }
+  // Sorts the ends of each such vertex by the angle of their direction and keeps running sums
+  // of their signs, for signs_in_sweep. Only for kernels whose order of directions is exact:
+  // a sort by an inconsistent order is undefined.
+  template <Kernel K>
+  void order_by_angle(const DirectionOrder<K>& order) {
+    by_angle_.resize(by_far_.size());
+    running_sum_.resize(by_far_.size() + many_groups_.size());
+    for (std::size_t m = 0; m < many_groups_.size(); ++m) {
+      const int from = many_begin_[m];
+      const int to = many_begin_[m + 1];
+      std::vector<std::pair<bool, int>> keyed;  // (upper half, code)
+      for (int k = from; k < to; ++k) {
+        const int code = by_far_[static_cast<std::size_t>(k)].code;
+        keyed.emplace_back(order.is_upper(FragmentEnd(*poly_, code).dir()), code);
+      }
+      std::sort(keyed.begin(), keyed.end(), [&](const std::pair<bool, int>& a, const std::pair<bool, int>& b) {
+        return order.compare_known(FragmentEnd(*poly_, a.second).dir(), a.first, FragmentEnd(*poly_, b.second).dir(),
+                                   b.first) == Sign::negative;
+      });
+      int* sum = running_sum_.data() + from + m;
+      sum[0] = 0;
+      for (int k = 0; k < to - from; ++k) {
+        by_angle_[static_cast<std::size_t>(from + k)] = keyed[static_cast<std::size_t>(k)].second;
+        sum[k + 1] = sum[k] + FragmentEnd(*poly_, keyed[static_cast<std::size_t>(k)].second).sign();
+      }
+    }
+    by_angle_ready_ = true;
+  }
+  bool by_angle_ready() const { return by_angle_ready_; }
+  // The sum of the signs of the ends at vertex m (an index of many(), order_by_angle done)
+  // whose direction lies strictly inside the counterclockwise sweep from `first` to `last`,
+  // in is_in_ccw_sweep's meaning (when first and last point the same way, every direction
+  // but theirs): the same sum as testing each end with a Sector, by two binary searches.
+  template <Kernel K>
+  int signs_in_sweep(const DirectionOrder<K>& order, int m, Direction first, Direction last) const {
+    const int from = many_begin_[static_cast<std::size_t>(m)];
+    const int n = many_begin_[static_cast<std::size_t>(m) + 1] - from;
+    const int* codes = by_angle_.data() + from;
+    const int* sum = running_sum_.data() + from + m;
+    const bool first_upper = order.is_upper(first);
+    const bool last_upper = order.is_upper(last);
+    // The number of ends whose angle is below q's (or, with `or_equal`, not above it).
+    const auto count_below = [&](Direction q, bool q_upper, bool or_equal) {
+      const int* at = std::partition_point(codes, codes + n, [&](int code) {
+        const Direction d = FragmentEnd(*poly_, code).dir();
+        const Sign s = order.compare_known(d, order.is_upper(d), q, q_upper);
+        return s == Sign::negative || (or_equal && s == Sign::zero);
+      });
+      return static_cast<int>(at - codes);
+    };
+    const Sign first_last = order.compare_known(first, first_upper, last, last_upper);
+    const int after_first = count_below(first, first_upper, true);
+    if (first_last == Sign::zero) return sum[n] - (sum[after_first] - sum[count_below(first, first_upper, false)]);
+    const int before_last = count_below(last, last_upper, false);
+    if (first_last == Sign::negative) return sum[before_last] - sum[after_first];
+    return sum[n] - sum[after_first] + sum[before_last];  // the sweep wraps past angle 0
+  }
+
   Span at(int v) const {
     const int s = slot_[static_cast<std::size_t>(v)];
     if (s >= 0) return {poly_, s};
@@ -150,6 +229,30 @@ class FragmentEndTable {
   }
 
  private:
+  struct FarEnd {
+    int far;   // the fragment's other vertex
+    int code;  // as in codes_
+  };
+  void index_many_ends() {
+    many_of_group_.assign(group_begin_.empty() ? 1 : group_begin_.size(), -1);
+    many_begin_.assign(1, 0);
+    for (std::size_t g = 1; g < group_begin_.size(); ++g) {
+      const int from = group_begin_[g - 1];
+      const int to = group_begin_[g];
+      if (to - from < kManyEnds) continue;
+      many_of_group_[g] = static_cast<int>(many_groups_.size());
+      many_groups_.push_back(static_cast<int>(g));
+      for (int k = from; k < to; ++k) {
+        const int code = codes_[static_cast<std::size_t>(k)];
+        const Fragment& f = poly_->fragments[static_cast<std::size_t>(code >> 1)];
+        by_far_.push_back({(code & 1) != 0 ? f.from : f.to, code});
+      }
+      std::sort(by_far_.begin() + many_begin_.back(), by_far_.end(),
+                [](const FarEnd& a, const FarEnd& b) { return a.far != b.far ? a.far < b.far : a.code < b.code; });
+      many_begin_.push_back(static_cast<int>(by_far_.size()));
+    }
+  }
+
   static constexpr int kUnreached = -1;
   static constexpr int kGrouped = -2;  // while building; then kGrouped - g for group g (from 1)
   const PreparedPolygon* poly_ = nullptr;
@@ -158,6 +261,16 @@ class FragmentEndTable {
   std::vector<int> group_begin_;  // group g's codes: [group_begin_[g - 1], group_begin_[g])
   std::vector<int> codes_;
   std::vector<std::uint64_t> reached_;  // bit v: v has fragment ends
+  // The vertices with many ends (m = 0, 1, ...): their groups in many_groups_, and their ends in
+  // [many_begin_[m], many_begin_[m + 1]) of by_far_ and by_angle_; running_sum_ holds
+  // n + 1 sums for each, from many_begin_[m] + m. many_of_group_[g]: m, or -1.
+  std::vector<int> many_of_group_{-1};
+  std::vector<int> many_groups_;
+  std::vector<int> many_begin_{0};
+  std::vector<FarEnd> by_far_;
+  std::vector<int> by_angle_;
+  std::vector<int> running_sum_;
+  bool by_angle_ready_ = false;
 };
 
 // Fragments of polygon x lying on u -> w: (same direction, opposite direction), found among
@@ -166,6 +279,7 @@ inline std::pair<int, int> fragments_along(const PreparedPolygon& x, const Fragm
   int same = 0;
   int opposite = 0;
   if (!x_ends.reaches(u)) return {0, 0};
+  if (const int m = x_ends.many(u); m >= 0) return x_ends.along(m, w);
   for (const FragmentEnd& end : x_ends.at(u)) {
     const Fragment& f = x.fragments[end.fragment()];
     if (end.sign() > 0 && f.to == w) ++same;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "core/arrangement.hpp"
@@ -30,38 +31,54 @@ bool is_counterclockwise(const Arrangement<K>& arr, const std::vector<int>& cycl
   return K::orient2d(arr.points[prev], arr.points[cycle[m]], arr.points[next]) == Sign::positive;
 }
 
-// How many of a polygon's edges coincide with each as sets {u, w}: entries chained from
-// their smaller point (a point has few edges), where a hash map cost a node per edge.
+// How many of a polygon's edges coincide with each as sets {u, w}: entries chained from the
+// end of smaller degree (a point has few edges, and where thousands meet, as at a fan's
+// apex, their other ends have few), where a hash map cost a node per edge. The degrees are
+// counted first, from every edge that will be added.
 class EdgeCounts {
  public:
-  explicit EdgeCounts(std::size_t num_points) : head_(num_points, -1) {}
+  EdgeCounts() = default;
+  template <class Cycles>
+  EdgeCounts(std::size_t num_points, const Cycles& cycles) : head_(num_points, -1), degree_(num_points, 0) {
+    for (const auto& cycle : cycles) {
+      for (const int v : cycle) degree_[static_cast<std::size_t>(v)] += 2;
+    }
+  }
 
   void add(int u, int w) {
-    const int lo = std::min(u, w);
-    const int hi = std::max(u, w);
-    for (int k = head_[lo]; k >= 0; k = next_[k]) {
-      if (hi_[k] == hi) {
+    const auto [key, other] = ends(u, w);
+    for (int k = head_[key]; k >= 0; k = next_[k]) {
+      if (other_[k] == other) {
         ++count_[k];
         return;
       }
     }
-    next_.push_back(head_[lo]);
-    hi_.push_back(hi);
+    next_.push_back(head_[key]);
+    other_.push_back(other);
     count_.push_back(1);
-    head_[lo] = static_cast<int>(hi_.size()) - 1;
+    head_[key] = static_cast<int>(other_.size()) - 1;
   }
   int count(int u, int w) const {
-    const int lo = std::min(u, w);
-    const int hi = std::max(u, w);
-    for (int k = head_[lo]; k >= 0; k = next_[k]) {
-      if (hi_[k] == hi) return count_[k];
+    const auto [key, other] = ends(u, w);
+    for (int k = head_[key]; k >= 0; k = next_[k]) {
+      if (other_[k] == other) return count_[k];
     }
     return 0;
   }
 
  private:
+  // (the end the entry is chained from, the other end): the one of smaller degree, then the
+  // smaller index, so that both orders of u and w give the same pair.
+  std::pair<std::size_t, int> ends(int u, int w) const {
+    const int du = degree_[static_cast<std::size_t>(u)];
+    const int dw = degree_[static_cast<std::size_t>(w)];
+    const bool u_key = du != dw ? du < dw : u < w;
+    return u_key ? std::pair<std::size_t, int>{static_cast<std::size_t>(u), w}
+                 : std::pair<std::size_t, int>{static_cast<std::size_t>(w), u};
+  }
   std::vector<int> head_;
-  std::vector<int> next_, hi_, count_;
+  std::vector<int> degree_;
+  std::vector<int> next_, other_, count_;
 };
 
 // The query for the parity of the number of cycles of `poly` whose FAR contains the points
@@ -97,7 +114,7 @@ void normalize_orientations(Arrangement<K>& arr, Operation op, unsigned threads 
     PreparedPolygon& poly = arr.polygon[pi];
     // A polygon with one cycle has it at depth 0; only nested parts need the ray test.
     const bool single = poly.cycles.size() == 1;
-    detail::EdgeCounts edge_count(single ? 0 : arr.points.size());
+    detail::EdgeCounts edge_count = single ? detail::EdgeCounts() : detail::EdgeCounts(arr.points.size(), poly.cycles);
     std::vector<Edge> edges;
     if (!single) {
       for (const auto& cycle : poly.cycles) {

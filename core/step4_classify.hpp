@@ -63,6 +63,12 @@ void walk_cycle(const Arrangement<K>& arr, PreparedPolygon& p, int c, int xi, co
     const Direction ahead{eout.src, eout.dst};
     // The left side of `next` is reached from the left side of f by sweeping clockwise
     // from `back` to `ahead`, i.e. through the counterclockwise sector ahead -> back.
+    if constexpr (K::is_exact) {
+      if (const int m = x_ends.many(f.to); m >= 0 && x_ends.by_angle_ready()) {  // two binary searches
+        left -= x_ends.signs_in_sweep(order, m, ahead, back);
+        continue;
+      }
+    }
     int delta = 0;
     std::optional<typename DirectionOrder<K>::Sector> sector;  // made at the first end tested
     for (const FragmentEnd& end : x_ends.at(f.to)) {
@@ -89,7 +95,10 @@ Incidence classify_fragments(Arrangement<K>& arr, unsigned threads = 1) {
   const std::size_t work = arr.polygon[0].fragments.size() + arr.polygon[1].fragments.size();
   const unsigned t = threads_for(work, threads);
   Incidence inc;
-  run_tasks(t, 2, [&](std::size_t p) { inc.ends[p] = FragmentEndTable(arr.polygon[p], nv); });
+  run_tasks(t, 2, [&](std::size_t p) {
+    inc.ends[p] = FragmentEndTable(arr.polygon[p], nv);
+    if constexpr (K::is_exact) inc.ends[p].order_by_angle(DirectionOrder<K>(arr.points));
+  });
   // [MK89 §4.3 step 1] One located point per ring: just left of its first fragment. Each
   // locator answers the queries of every cycle of A and of B in one batch.
   std::vector<LocatorQuery> queries;

@@ -317,8 +317,8 @@ std::vector<int> select_isolated_points(const Arrangement<K>& arr, const Inciden
                                         const std::vector<bool>& touched) {
   const PolygonType ta = arr.polygon[0].type;
   const PolygonType tb = arr.polygon[1].type;
-  std::vector<int> candidates;
-  for (int v = 0; v < arr.num_points(); ++v) {
+  std::vector<int> candidates;  // crossings too: two dangling edges may cross at an isolated point
+  for (int v = 0; v < arr.num_vertices(); ++v) {
     if (!inc.ends[0].at(v).empty() && !inc.ends[1].at(v).empty()) candidates.push_back(v);
   }
   for (const auto& poly : arr.polygon) {
@@ -328,7 +328,7 @@ std::vector<int> select_isolated_points(const Arrangement<K>& arr, const Inciden
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   std::array<std::vector<bool>, 2> is_point_cycle;
   for (int p = 0; p < 2; ++p) {
-    is_point_cycle[p].assign(arr.points.size(), false);
+    is_point_cycle[p].assign(static_cast<std::size_t>(arr.num_vertices()), false);
     for (const int v : arr.polygon[p].point_cycles) is_point_cycle[p][v] = true;
   }
   std::vector<int> out;

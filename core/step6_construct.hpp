@@ -6,6 +6,7 @@
 // turning towards the region, so cycles touch but never cross at shared vertices.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <string>
@@ -161,6 +162,91 @@ bool forced_cycles(const DirectionOrder<K>& order, const HashEdgeTable& ef, Poly
   return true;
 }
 
+// The choices of step 6 at vertices with long chains in EF (a fan's apex, where thousands
+// of result cycles meet): scanning every entry at each of the thousands of visits would cost
+// the square of the degree. At its first visit a vertex's live entries are sorted by angle
+// (ties in chain order); later visits find the entry the scan would choose by binary search
+// and skip the entries that have died since (a union-find of dead runs each way; entries
+// only die). Exact kernels only: a sort by an inconsistent order is undefined.
+template <Kernel K>
+class AngularChoices {
+ public:
+  AngularChoices(const DirectionOrder<K>& order, HashEdgeTable& ef, bool result_on_left)
+      : order_(&order), ef_(&ef), result_on_left_(result_on_left) {}
+
+  // The live entry from v that the scan of construct_result_cycles chooses after arriving
+  // along the reverse of `back`, or nullptr when none is left.
+  EfEntry* choose(int v, Direction back) {
+    auto [it, made] = at_.try_emplace(v);
+    Sorted& s = it->second;
+    if (made) make(v, s);
+    const int n = static_cast<int>(s.entries.size());
+    const bool back_upper = order_->is_upper(back);
+    const auto count_below = [&](bool or_equal) {
+      const auto at = std::partition_point(s.entries.begin(), s.entries.end(), [&](const Item& item) {
+        const Sign c = order_->compare_known(item.entry->dir, item.upper, back, back_upper);
+        return c == Sign::negative || (or_equal && c == Sign::zero);
+      });
+      return static_cast<int>(at - s.entries.begin());
+    };
+    const int below = count_below(false);
+    const int not_above = count_below(true);
+    if (const int i = s.alive_from(below); i < not_above) return s.entries[static_cast<std::size_t>(i)].entry;  // two-sided
+    int i = -1;
+    if (result_on_left_) {  // the first met turning clockwise from `back`
+      i = s.alive_until(below - 1);
+      if (i < 0) i = s.alive_until(n - 1);
+    } else {  // counterclockwise
+      i = s.alive_from(not_above);
+      if (i >= n) i = s.alive_from(0);
+    }
+    return i < 0 || i >= n ? nullptr : s.entries[static_cast<std::size_t>(i)].entry;
+  }
+
+ private:
+  struct Item {
+    EfEntry* entry;
+    bool upper;  // is_upper of its direction
+  };
+  struct Sorted {
+    std::vector<Item> entries;
+    std::vector<int> right;  // for a dead entry: a later index no entry between is alive; else itself
+    std::vector<int> left;   // the same, earlier
+    // The first live entry at index i or after (n when none), and the last at i or before
+    // (-1 when none), shortening the paths over dead entries as it goes.
+    int alive_from(int i) { return skip(right, i, +1); }
+    int alive_until(int i) { return skip(left, i, -1); }
+    int skip(std::vector<int>& link, int i, int step) {
+      const int n = static_cast<int>(entries.size());
+      const auto out = [&](int j) { return j < 0 || j >= n; };
+      int root = i;
+      while (!out(root) && !entries[static_cast<std::size_t>(root)].entry->alive) {
+        const int l = link[static_cast<std::size_t>(root)];
+        root = l == root ? root + step : l;
+      }
+      while (!out(i) && i != root) {
+        const int l = link[static_cast<std::size_t>(i)];
+        link[static_cast<std::size_t>(i)] = root;
+        i = l == i ? i + step : l;
+      }
+      return root;
+    }
+  };
+  void make(int v, Sorted& s) {
+    ef_->for_each_from(v, [&](EfEntry& e) { s.entries.push_back({&e, order_->is_upper(e.dir)}); });
+    std::stable_sort(s.entries.begin(), s.entries.end(), [&](const Item& a, const Item& b) {
+      return order_->compare_known(a.entry->dir, a.upper, b.entry->dir, b.upper) == Sign::negative;
+    });
+    s.right.resize(s.entries.size());
+    s.left.resize(s.entries.size());
+    for (std::size_t i = 0; i < s.entries.size(); ++i) s.right[i] = s.left[i] = static_cast<int>(i);
+  }
+  const DirectionOrder<K>* order_;
+  HashEdgeTable* ef_;
+  bool result_on_left_;
+  std::unordered_map<int, Sorted> at_;
+};
+
 }  // namespace detail
 
 template <Kernel K, class Table>
@@ -178,9 +264,19 @@ std::vector<ResultCycle> construct_result_cycles(const Arrangement<K>& arr, Tabl
   // The next fragment after arriving at v along `in`: the first one met turning from the
   // reversed arrival direction towards the result region (clockwise when the region lies
   // left). The reverse fragment itself, if selected, comes first: a two-sided part.
+  [[maybe_unused]] auto angular = [&] {
+    if constexpr (std::is_same_v<Table, HashEdgeTable> && K::is_exact) {
+      return detail::AngularChoices<K>(order, ef, result_on_left);
+    } else {
+      return 0;
+    }
+  }();
   const auto choose_next = [&](int v, Direction in) -> EfEntry* {
     EfEntry* best = nullptr;
     const Direction back = in.reversed();
+    if constexpr (std::is_same_v<Table, HashEdgeTable> && K::is_exact) {
+      if (ef.is_long(v)) return angular.choose(v, back);
+    }
     ef.for_each_from(v, [&](EfEntry& e) {
       if (best == nullptr) {
         best = &e;

@@ -7,7 +7,8 @@
 // Preconditions: CGAL 5.5 (Debian 12). Environment: MK_ORACLE_SEED (a number, or "random"),
 // MK_ORACLE_OPERATIONS (how many operations to check; default 12000 in Release, fewer under
 // the sanitizers: see kDefaultOperations); for debugging, MK_ORACLE_VERBOSE (print each
-// pair before it runs) and MK_ORACLE_GRID (the same pairs left on their integer grid).
+// pair before it runs), MK_ORACLE_GRID (the same pairs left on their integer grid) and
+// MK_ORACLE_FIRST (the index of the first pair, to replay a failure).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -54,7 +55,8 @@ TEST(Differential, ExactKernelsAgreeWithCgalEpeckAndTheMembershipOracle) {
   const auto t0 = std::chrono::steady_clock::now();
   Tally tally;
   std::map<std::string, long> per_family;
-  for (std::size_t index = 0; tally.operations < operations; ++index) {
+  const char* first = std::getenv("MK_ORACLE_FIRST");  // debugging: start at this pair
+  for (std::size_t index = first != nullptr ? std::strtoull(first, nullptr, 10) : 0; tally.operations < operations; ++index) {
     std::mt19937_64 rng(seed + 0x9e3779b97f4a7c15ull * index);
     const GeneratedPair pair = random_pair(index, rng);
     const std::string what = "pair " + std::to_string(index) + " (" + pair.family + ", " + pair.transform +

@@ -1,7 +1,8 @@
 // Random input pairs for the differential and membership tests, in families that stress the
 // algorithm rather than the arithmetic: shared vertices and edges, collinear overlaps,
 // vertices on edges, identical and reversed rings, holes touching shells and each other at
-// vertices, multi-part inputs, rings touching themselves at repeated vertices. Each is made
+// vertices, multi-part inputs, rings touching themselves at repeated vertices, fans of dozens
+// of parts meeting at one vertex. Each is made
 // on a small integer grid and then moved off it exactly: a rotation by a Pythagorean angle
 // (an integer matrix, so every degeneracy survives), a scaling by 2^k for k anywhere in the
 // double exponent range (subnormal to 2^1000), a translation, and a shuffle of ring starts,

@@ -302,6 +302,39 @@ IPoly multi_part(Rng& rng) {
   return p;
 }
 
+// Thin triangles around one apex, each from the apex to two neighbouring grid points of the
+// square of half-width r around it (in angular order), the next one starting at the same
+// point (sharing an edge) or one further: 4 r to 8 r parts meeting at the apex, so at least the
+// 32 fragment ends from which steps 4 to 6 index a vertex (r >= 4). Shared edges lie inside
+// the region; in a hole-type polygon they are dangling edges of its closed set.
+IPoly fan(Rng& rng, IP apex, Int r) {  // r >= 4
+  std::vector<IP> square;
+  for (Int k = -r; k < r; ++k) {
+    square.push_back({apex.x + k, apex.y - r});
+    square.push_back({apex.x + r, apex.y + k});
+    square.push_back({apex.x - k, apex.y + r});
+    square.push_back({apex.x - r, apex.y - k});
+  }
+  // By angle around the apex: half-plane first, then the sign of the cross product.
+  const auto upper = [&](const IP& p) { return p.y > apex.y || (p.y == apex.y && p.x > apex.x); };
+  std::sort(square.begin(), square.end(), [&](const IP& a, const IP& b) {
+    if (upper(a) != upper(b)) return upper(a);
+    return (a.x - apex.x) * (b.y - apex.y) - (a.y - apex.y) * (b.x - apex.x) > 0;
+  });
+  IPoly p;
+  for (std::size_t i = 0; i + 1 < square.size(); i += chance(rng, 2) ? 1 : 2) {
+    p.rings.push_back({apex, square[i], square[i + 1]});
+  }
+  return p;
+}
+std::pair<IPoly, IPoly> fans(Rng& rng) {
+  const IP apex{uniform(rng, 0, 2), uniform(rng, 0, 2)};
+  // Mostly one apex; another one makes every pair of rays from the two cross (the oracle's
+  // cost grows with the crossings).
+  const IP other = chance(rng, 8) ? IP{apex.x + uniform(rng, -2, 2), apex.y + uniform(rng, -2, 2)} : apex;
+  return {fan(rng, apex, 4), fan(rng, other, chance(rng, 2) ? 2 : 3)};  // B's apex indexed less often
+}
+
 // A convex polygon, and one whose vertices lie on its edges (vertex_on_edge): midpoints of
 // its edges and points inside, on a doubled grid so that midpoints are integral.
 std::pair<IPoly, IPoly> vertex_on_edge(Rng& rng) {

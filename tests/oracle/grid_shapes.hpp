@@ -46,5 +46,7 @@ IPoly grid_star(Rng& rng, Int cx, Int cy);
 IPoly holes_touching(Rng& rng);
 IPoly multi_part(Rng& rng);
 std::pair<IPoly, IPoly> vertex_on_edge(Rng& rng);
+IPoly fan(Rng& rng, IP apex, Int r);
+std::pair<IPoly, IPoly> fans(Rng& rng);
 
 }  // namespace mk::oracle::grid
