@@ -207,15 +207,6 @@ void make_vertex_complete(const std::vector<typename K::Point>& pts, const std::
   insert_touching_points(rings, inserted, static_cast<int>(items.size()));
 }
 
-// When the preparation's pair search tries boxes within a budget before the sweep over both
-// polygons (core/red_blue.hpp): from this many edges, when the chains' boxes are estimated to
-// make more than kTrialChainPairs pairs per edge (estimated_chain_pairs), and the budget,
-// kMergesPerEdge merges of chains per edge. Measured (bench/README.md, "Nested wavy rings"):
-// the sweep costs about what 4 to 8 merges per edge do.
-inline constexpr std::size_t kRedBlueFrom = 4096;
-inline constexpr double kTrialChainPairs = 8;
-inline constexpr double kMergesPerEdge = 8;
-
 // Both polygons made vertex-complete by one pair search over the edges of both, which also
 // finds what step 3 looks for, the crossings and touching points between A and B: kept in
 // arr.early when no point had to be inserted (every edge then is one of step 3's), dropped
@@ -273,10 +264,7 @@ void make_both_vertex_complete(Arrangement<K>& arr, std::array<std::vector<IdRin
       find_clean();
       bipartite = clean == 1;
     }
-    if constexpr (K::is_exact) {
-      const double chain_pairs = search == PairSearch::sweep && items.size() >= kRedBlueFrom ? estimated_chain_pairs<K>(pts, items) : 0.0;
-      trial = chain_pairs > kTrialChainPairs * static_cast<double>(items.size());
-    }
+    if constexpr (K::is_exact) trial = tries_boxes_first<K>(pts, items, search);
   }
   struct Found {
     std::array<EdgeInsertions, 2> inserted;
@@ -324,16 +312,10 @@ void make_both_vertex_complete(Arrangement<K>& arr, std::array<std::vector<IdRin
     // merges; when it runs out and each polygon meets itself only at shared ends, the sweep
     // over both (core/red_blue.hpp) gives the pairs that meet, at O((n + k) log n).
     if (search == PairSearch::red_blue || trial) {
-      searched = search != PairSearch::red_blue && search_boxes(static_cast<std::int64_t>(kMergesPerEdge * static_cast<double>(items.size())));
+      searched = search != PairSearch::red_blue && search_boxes(merge_budget(items.size()));
       if (!searched && clean < 0) find_clean();
       if (!searched && clean == 1) {
-        const std::vector<std::pair<int, int>> meeting = red_blue_meeting_pairs<K>(pts, items);
-        const unsigned t = threads_for(meeting.size(), threads);
-        found.assign(t, Found{});
-        run_tasks(t, t, [&](std::size_t part) {
-          const std::size_t from = meeting.size() * part / t, to = meeting.size() * (part + 1) / t;
-          for (std::size_t k = from; k < to; ++k) relate(found[part], meeting[k].first, meeting[k].second);
-        });
+        relate_red_blue_pairs<K>(pts, items, threads, found, relate);
         searched = true;
       }
     }

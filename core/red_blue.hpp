@@ -28,16 +28,20 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
 #include <memory_resource>
 #include <set>
 #include <span>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "core/buckets.hpp"
+#include "core/clean_edges.hpp"
 #include "core/pairs.hpp"
+#include "core/parallel.hpp"
 #include "kernel/kernel.hpp"
 
 namespace mk {
@@ -245,5 +249,41 @@ std::vector<std::pair<int, int>> red_blue_meeting_pairs(const std::vector<Point>
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
+
+namespace detail {
+
+// When a pair search over both polygons tries boxes within a budget before the red-blue sweep
+// (the preparation, and step 3 when the preparation's findings were dropped): with an exact
+// kernel over double points and search `sweep`, from kRedBlueFrom edges, when the chains'
+// boxes are estimated to make more than kTrialChainPairs pairs per edge
+// (estimated_chain_pairs); the budget is kMergesPerEdge merges of chains per edge. Measured
+// (bench/README.md, "Nested wavy rings"): the sweep costs about what 4 to 8 merges per edge do.
+inline constexpr std::size_t kRedBlueFrom = 4096;
+inline constexpr double kTrialChainPairs = 8;
+inline constexpr double kMergesPerEdge = 8;
+
+template <Kernel K>
+bool tries_boxes_first(const std::vector<typename K::Point>& pts, std::span<const SweepItem> items, PairSearch search) {
+  return search == PairSearch::sweep && items.size() >= kRedBlueFrom &&
+         estimated_chain_pairs<K>(pts, items) > kTrialChainPairs * static_cast<double>(items.size());
+}
+inline std::int64_t merge_budget(std::size_t items) { return static_cast<std::int64_t>(kMergesPerEdge * static_cast<double>(items)); }
+
+// The sweep's pairs related on up to `threads` threads, into one Found per part in their
+// order: relate(found[part], i, j) for each pair (i, j).
+template <Kernel K, class Found, class Relate>
+  requires(std::is_same_v<typename K::Point, Point> && K::is_exact)
+void relate_red_blue_pairs(const std::vector<Point>& pts, std::span<const SweepItem> items, unsigned threads,
+                           std::vector<Found>& found, Relate&& relate) {
+  const std::vector<std::pair<int, int>> meeting = red_blue_meeting_pairs<K>(pts, items);
+  const unsigned t = threads_for(meeting.size(), threads);
+  found.assign(t, Found{});
+  run_tasks(t, t, [&](std::size_t part) {
+    const std::size_t from = meeting.size() * part / t, to = meeting.size() * (part + 1) / t;
+    for (std::size_t k = from; k < to; ++k) relate(found[part], meeting[k].first, meeting[k].second);
+  });
+}
+
+}  // namespace detail
 
 }  // namespace mk

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <span>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -19,6 +21,7 @@
 #include "core/edge_insertions.hpp"
 #include "core/error.hpp"
 #include "core/pairs.hpp"
+#include "core/red_blue.hpp"
 #include "core/parallel.hpp"
 #include "core/sorting.hpp"
 #include "predicates/segments.hpp"
@@ -188,24 +191,49 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
       std::vector<Crossing> crossings;
       std::array<EdgeInsertions, 2> inserted;
     };
-    CandidatePairs<K> pairs(pts, arr.x_rank, items, true, search, threads);
-    std::vector<Found> found(pairs.parts());
-    run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
-      Found& out = found[part];
-      pairs.for_each_in_part(part, [&](int i, int j) {
-        if (i > j) std::swap(i, j);  // i indexes A, j indexes B
-        const int jb = j - na;
-        const Edge& a = ea[i];
-        const Edge& b = eb[jb];
-        relate_edges_across<K>(
-            pts, a.src, a.dst, b.src, b.dst,
-            [&] {
-              out.crossings.push_back({i, jb, K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst])});
-              if constexpr (!K::is_exact) check_finite_crossing<K>(arr, out.crossings.back().vertex, a, b);
-            },
-            [&](int p) { out.inserted[0].add(i, p); }, [&](int p) { out.inserted[1].add(jb, p); });
+    const auto relate = [&](Found& out, int i, int j) {
+      if (i > j) std::swap(i, j);  // i indexes A, j indexes B
+      const int jb = j - na;
+      const Edge& a = ea[i];
+      const Edge& b = eb[jb];
+      relate_edges_across<K>(
+          pts, a.src, a.dst, b.src, b.dst,
+          [&] {
+            out.crossings.push_back({i, jb, K::crossing(pts[a.src], pts[a.dst], pts[b.src], pts[b.dst])});
+            if constexpr (!K::is_exact) check_finite_crossing<K>(arr, out.crossings.back().vertex, a, b);
+          },
+          [&](int p) { out.inserted[0].add(i, p); }, [&](int p) { out.inserted[1].add(jb, p); });
+    };
+    std::vector<Found> found;
+    // The search by boxes, stopped after `merges` merges of chains when not negative; whether
+    // it finished.
+    const auto search_boxes = [&](std::int64_t merges) {
+      CandidatePairs<K> pairs(pts, arr.x_rank, items, true, search, threads);
+      if (merges >= 0) pairs.limit_merges(merges);
+      found.assign(pairs.parts(), Found{});
+      run_tasks(threads_for(items.size(), threads), pairs.parts(), [&](std::size_t part) {
+        pairs.for_each_in_part(part, [&](int i, int j) { relate(found[part], i, j); });
       });
-    });
+      return !pairs.exhausted();
+    };
+    bool searched = false;
+    if constexpr (std::is_same_v<typename K::Point, Point> && K::is_exact) {
+      // The preparation's findings are dropped when a ring is split into cycles (a flower: one
+      // ring through its centre thousands of times), and the search is made again here, the
+      // way the preparation makes it (paper-notes deviation 23): where the chains' boxes
+      // overlap many others, boxes within a budget, then, when each polygon's edges meet only
+      // at shared ends, the red-blue sweep.
+      if (search == PairSearch::red_blue || detail::tries_boxes_first<K>(pts, items, search)) {
+        searched = search != PairSearch::red_blue && search_boxes(detail::merge_budget(items.size()));
+        const std::span<const SweepItem> all(items);
+        if (!searched && edges_meet_only_at_ends<K>(pts, all.subspan(0, ea.size())) &&
+            edges_meet_only_at_ends<K>(pts, all.subspan(ea.size()))) {
+          detail::relate_red_blue_pairs<K>(pts, all, threads, found, relate);
+          searched = true;
+        }
+      }
+    }
+    if (!searched) search_boxes(-1);
     std::size_t expected = 0;
     for (const Found& f : found) expected += f.crossings.size();
     arr.crossings.reserve(expected);

@@ -936,6 +936,17 @@ TEST(RedBlueSweep, OperationAgreesWithEveryPairSearch) {
   };
   cases.push_back({fan(24, 0, 8), fan(24, 0.25, 6)});
   cases.push_back({fan(24, 0, 8), fan(24, 0, 6)});
+  // Flowers: one ring through the apex again and again, split into cycles there, so that
+  // step 3 searches again instead of taking the preparation's findings.
+  const auto flower = [&](int n, double turn, double radius) {
+    Polygon f;
+    f.rings.emplace_back();
+    for (const Ring& petal : fan(n, turn, radius).rings) f.rings[0].insert(f.rings[0].end(), petal.begin(), petal.end());
+    return f;
+  };
+  cases.push_back({flower(24, 0, 8), flower(24, 0.25, 6)});
+  cases.push_back({flower(24, 0, 8), fan(24, 0.25, 6)});
+  cases.push_back({flower(24, 0, 8), flower(24, 0, 6)});
   int compared = 0;
   for (std::size_t c = 0; c < cases.size(); ++c) {
     for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference, Operation::symmetric_difference}) {
