@@ -168,8 +168,9 @@ class FragmentEndTable {
   template <Kernel K>
   void order_by_angle(const DirectionOrder<K>& order) {
     by_angle_.resize(by_far_.size());
-    running_sum_.resize(by_far_.size() + many_groups_.size());
-    for (std::size_t m = 0; m < many_groups_.size(); ++m) {
+    const std::size_t vertices = many_begin_.size() - 1;
+    running_sum_.resize(by_far_.size() + vertices);
+    for (std::size_t m = 0; m < vertices; ++m) {
       const int from = many_begin_[m];
       const int to = many_begin_[m + 1];
       std::vector<std::pair<bool, int>> keyed;  // (upper half, code)
@@ -240,8 +241,7 @@ class FragmentEndTable {
       const int from = group_begin_[g - 1];
       const int to = group_begin_[g];
       if (to - from < kManyEnds) continue;
-      many_of_group_[g] = static_cast<int>(many_groups_.size());
-      many_groups_.push_back(static_cast<int>(g));
+      many_of_group_[g] = static_cast<int>(many_begin_.size()) - 1;
       for (int k = from; k < to; ++k) {
         const int code = codes_[static_cast<std::size_t>(k)];
         const Fragment& f = poly_->fragments[static_cast<std::size_t>(code >> 1)];
@@ -261,11 +261,10 @@ class FragmentEndTable {
   std::vector<int> group_begin_;  // group g's codes: [group_begin_[g - 1], group_begin_[g])
   std::vector<int> codes_;
   std::vector<std::uint64_t> reached_;  // bit v: v has fragment ends
-  // The vertices with many ends (m = 0, 1, ...): their groups in many_groups_, and their ends in
+  // The vertices with many ends (m = 0, 1, ..., many_begin_.size() - 2): their ends in
   // [many_begin_[m], many_begin_[m + 1]) of by_far_ and by_angle_; running_sum_ holds
   // n + 1 sums for each, from many_begin_[m] + m. many_of_group_[g]: m, or -1.
   std::vector<int> many_of_group_{-1};
-  std::vector<int> many_groups_;
   std::vector<int> many_begin_{0};
   std::vector<FarEnd> by_far_;
   std::vector<int> by_angle_;
