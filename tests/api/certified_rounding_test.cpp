@@ -18,68 +18,12 @@
 #include "core/ogc_validity.hpp"
 #include "tests/api/near_degenerate.hpp"
 #ifdef MK_HAVE_GEOS
-#include <geos_c.h>
+#include "tests/api/geos_validity.hpp"
 #endif
 
 namespace mk {
 namespace {
 
-#ifdef MK_HAVE_GEOS
-// GEOS's own verdict on the written polygons (an independent check of the exact one).
-class Geos {
- public:
-  Geos() : h_(GEOS_init_r()) {}
-  ~Geos() { GEOS_finish_r(h_); }
-  Geos(const Geos&) = delete;
-  Geos& operator=(const Geos&) = delete;
-  // scale: every coordinate multiplied by it (a power of two: exact, so validity is kept).
-  bool is_valid(const MultiPolygon& mp, std::string* why, double scale = 1) {
-    scale_ = scale;
-    std::vector<GEOSGeometry*> parts;
-    for (const auto& p : mp) {
-      GEOSGeometry* shell = ring(p.shell);
-      std::vector<GEOSGeometry*> holes;
-      for (const auto& h : p.holes) holes.push_back(ring(h));
-      parts.push_back(GEOSGeom_createPolygon_r(h_, shell, holes.data(), static_cast<unsigned>(holes.size())));
-    }
-    GEOSGeometry* g = GEOSGeom_createCollection_r(h_, GEOS_MULTIPOLYGON, parts.data(), static_cast<unsigned>(parts.size()));
-    const char valid = GEOSisValid_r(h_, g);
-    if (valid != 1 && why) {
-      char* reason = GEOSisValidReason_r(h_, g);
-      *why = reason;
-      GEOSFree_r(h_, reason);
-    }
-    GEOSGeom_destroy_r(h_, g);
-    return valid == 1;
-  }
-
- private:
-  GEOSGeometry* ring(const Ring& r) {
-    GEOSCoordSequence* s = GEOSCoordSeq_create_r(h_, static_cast<unsigned>(r.size() + 1), 2);
-    for (std::size_t i = 0; i <= r.size(); ++i) {
-      const Point& p = r[i % r.size()];
-      GEOSCoordSeq_setXY_r(h_, s, static_cast<unsigned>(i), p.x * scale_, p.y * scale_);
-    }
-    return GEOSGeom_createLinearRing_r(h_, s);
-  }
-  GEOSContextHandle_t h_;
-  double scale_ = 1;
-};
-
-// The power of two that brings the largest coordinate magnitude into [1, 2): GEOS's
-// orientation test multiplies coordinate differences, which underflow for coordinates
-// near 1e-150 whose differences are a few ulps, and then reports crossings that are not
-// there; scaled exactly, the question is the same and GEOS answers it in range.
-double unit_scale(const MultiPolygon& mp) {
-  double largest = 0;
-  for (const auto& p : mp) {
-    for (const auto* r : {&p.shell}) {
-      for (const Point& q : *r) largest = std::max({largest, std::fabs(q.x), std::fabs(q.y)});
-    }
-  }
-  return largest > 0 ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
-}
-#endif
 
 int pairs_per_variant() {
   const char* env = std::getenv("MK_ROUNDING_PAIRS");
@@ -104,7 +48,7 @@ Counts run_family(std::uint64_t seed, int variant, double scale, int pairs) {
   std::mt19937_64 rng(seed);
   Counts c;
 #ifdef MK_HAVE_GEOS
-  Geos geos;
+  test::Geos geos;
 #endif
   for (int i = 0; i < pairs; ++i) {
     const auto pair = test::near_degenerate_pair(rng, variant, scale);
@@ -130,7 +74,7 @@ Counts run_family(std::uint64_t seed, int variant, double scale, int pairs) {
 #ifdef MK_HAVE_GEOS
       std::string why;
       c.geos_unscaled_invalid += !geos.is_valid(r.output.polygons, nullptr);
-      const bool geos_ok = geos.is_valid(r.output.polygons, &why, unit_scale(r.output.polygons));
+      const bool geos_ok = geos.is_valid(r.output.polygons, &why, test::unit_scale(r.output.polygons));
       c.geos_invalid += !geos_ok;
       EXPECT_TRUE(geos_ok) << "GEOS: " << why << "; seed " << seed << " variant " << variant << " pair " << i;
 #endif
