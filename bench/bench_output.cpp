@@ -22,10 +22,20 @@
 //   area_exact_s  the exact area and its decimal text ("p/q")
 //   write_ratio   (output_s + wkt_s) / op_s: the bar is 0.25
 //   stats_ratio   area_exact_s / op_s: the bar is 2
+//   to_chars_cpu_s processor time of std::to_chars on every written coordinate, one thread
+//   text_floor_ratio to_chars_cpu_s / threads / op_s: the part of write_ratio that the
+//                 shortest text of the doubles alone takes, even if perfectly parallel
+//   area_gcd_s    GMP's gcd of the reduced area's numerator and denominator (what checking
+//                 or making it reduced costs at least)
+//   area_text_s   GMP's decimal text of the reduced area alone
+//   gmp_floor_ratio (area_gcd_s + area_text_s) / op_s: what any exact area as reduced
+//                 decimal text costs with GMP, against the bar of 2
 // The benchmark's own time is op_s + output_s + wkt_s: what the command's user waits for
 // after reading the input, without --stats.
 #include <benchmark/benchmark.h>
+#include <gmpxx.h>
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -54,6 +64,7 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
   Options opt;
   opt.op = Operation::intersection;
   double op = 0, output = 0, certify = 0, wkt = 0, wkt_cpu = 0, area = 0, area_exact = 0, rounding = 0, validity = 0;
+  double area_gcd = 0, area_text = 0, to_chars_cpu = 0;
   bool snapped = false;
   std::size_t digits = 0;
   for (auto _ : state) {
@@ -90,14 +101,46 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
     wkt += seconds_since(t);
     wkt_cpu += static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
     benchmark::DoNotOptimize(text.data());
+    // The shortest round-trip text of every written coordinate and nothing else, on one
+    // thread (std::to_chars, the fastest such formatter in Debian's packages here): a floor
+    // under any WKT writer that writes every double so that it reads back exactly.
+    {
+      const std::clock_t c0 = std::clock();
+      char buf[32];
+      std::size_t chars = 0;
+      const auto put = [&](const Point& p) {
+        chars += static_cast<std::size_t>(std::to_chars(buf, buf + sizeof buf, p.x).ptr - buf);
+        chars += static_cast<std::size_t>(std::to_chars(buf, buf + sizeof buf, p.y).ptr - buf);
+      };
+      for (const auto& pg : out.polygons) {
+        for (const Point& p : pg.shell) put(p);
+        for (const auto& h : pg.holes) {
+          for (const Point& p : h) put(p);
+        }
+      }
+      benchmark::DoNotOptimize(chars);
+      to_chars_cpu += static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+    }
     t = Clock::now();
     const auto rounded = rounded_area(r);
     area += seconds_since(t);
     benchmark::DoNotOptimize(rounded);
     t = Clock::now();
-    const std::string exact = exact_area(r)->get_str();
+    const std::optional<mpq_class> q = exact_area(r);
+    const std::string exact = q->get_str();
     area_exact += seconds_since(t);
     digits = exact.size();
+    // What GMP alone spends on an answer of this size, whatever sums it: one gcd of its two
+    // parts (a reduction needs at least that one, on parts at least this large) and the
+    // decimal text.
+    t = Clock::now();
+    mpz_class g;
+    mpz_gcd(g.get_mpz_t(), q->get_num_mpz_t(), q->get_den_mpz_t());
+    benchmark::DoNotOptimize(g.get_mpz_t());
+    area_gcd += seconds_since(t);
+    t = Clock::now();
+    benchmark::DoNotOptimize(q->get_str().size());
+    area_text += seconds_since(t);
     state.SetIterationTime(op + output + wkt - waited_before);
   }
   const double n = static_cast<double>(state.iterations());
@@ -117,6 +160,12 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
   state.counters["area_exact_s"] = area_exact / n;
   state.counters["write_ratio"] = (output + wkt) / op;
   state.counters["stats_ratio"] = area_exact / op;
+  state.counters["to_chars_cpu_s"] = to_chars_cpu / n;
+  // (to_chars_cpu_s over the writer's threads, ideally shared) / op_s: writing's floor.
+  state.counters["text_floor_ratio"] = to_chars_cpu / static_cast<double>(resolve_threads(opt.threads)) / op;
+  state.counters["area_gcd_s"] = area_gcd / n;
+  state.counters["area_text_s"] = area_text / n;
+  state.counters["gmp_floor_ratio"] = (area_gcd + area_text) / op;
   state.counters["area_exact_chars"] = static_cast<double>(digits);
   state.counters["vertices_in"] = static_cast<double>(w.vertices());
 }
