@@ -10,8 +10,10 @@
 #pragma once
 
 #include <gmpxx.h>
+#include <mpfr.h>
 
 #include <array>
+#include <charconv>
 #include <cfenv>
 #include <cmath>
 #include <compare>
@@ -229,6 +231,22 @@ class SnapGrid {
     if (exponent_) return "2^" + std::to_string(*exponent_);
     return spacing_.get_str();
   }
+  // The same for a message: a spacing whose exact text is long (1e-300 is a 1 over 301
+  // digits) as "about" its value to four digits, rounded by MPFR.
+  std::string readable_text() const {
+    std::string t = text();
+    if (t.size() <= 32) return t;
+    mpfr_t v;
+    mpfr_init2(v, 64);
+    mpfr_set_q(v, spacing_.get_mpq_t(), MPFR_RNDN);
+    char* printed = nullptr;
+    const int n = mpfr_asprintf(&printed, "%.4Rg", v);
+    mpfr_clear(v);
+    if (n < 0) return t;
+    t = std::string("about ") + printed;
+    mpfr_free_str(printed);
+    return t;
+  }
 
   // The pixel index of coordinate v: floor(v / g + 1/2). Throws std::range_error when it is
   // beyond 2^62 in magnitude.
@@ -289,8 +307,10 @@ class SnapGrid {
   void check_range(double largest) const {
     if (!(largest > 0)) return;
     if (cmp(mpq_class(largest) / spacing_, mpq_class(max_index - 1)) > 0) {
-      throw std::invalid_argument("grid " + text() + " is too fine for coordinates of magnitude " +
-                                  std::to_string(largest) + " (more than 2^53 grid steps)");
+      char magnitude[32];
+      const auto end = std::to_chars(magnitude, magnitude + sizeof magnitude, largest).ptr;
+      throw std::invalid_argument("grid " + readable_text() + " is too fine for coordinates of magnitude " +
+                                  std::string(magnitude, end) + " (more than 2^53 grid steps)");
     }
   }
 

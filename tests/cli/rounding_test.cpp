@@ -52,6 +52,19 @@ TEST(cliRounding, GridAndBadGrid) {
   }
   const ProcessResult both = run_mkbool({"union", "POLYGON ((0 0, 1 0, 0 1, 0 0))", "POLYGON ((0 0, 1 0, 0 1, 0 0))", "--grid", "1", "--rounding", "nearest"});
   EXPECT_EQ(both.exit_code, 2) << describe(both);
+  // A grid far finer than the doubles at the result's scale: exit 1, and a message that names
+  // both in a form a reader can take in (not 300 digits, not a magnitude of "0.000000").
+  const ProcessResult fine = run_mkbool({"union", "POLYGON ((0 0, 3e-10 0, 0 3e-10, 0 0))",
+                                         "POLYGON ((1e-10 1e-10, 4e-10 1e-10, 1e-10 4e-10, 1e-10 1e-10))", "--grid", "1e-300"});
+  EXPECT_EQ(fine.exit_code, 1) << describe(fine);
+  EXPECT_NE(fine.err.find("grid about 1e-300 is too fine for coordinates of magnitude 4e-10"), std::string::npos)
+      << describe(fine);
+  EXPECT_LT(fine.err.size(), 200u) << describe(fine);
+  const ProcessResult fraction = run_mkbool({"union", "POLYGON ((0 0, 3 0, 0 3, 0 0))", "POLYGON ((1 1, 4 1, 1 4, 1 1))",
+                                             "--grid", "1/9007199254740993"});
+  EXPECT_EQ(fraction.exit_code, 1) << describe(fraction);
+  EXPECT_NE(fraction.err.find("grid 1/9007199254740993 is too fine for coordinates of magnitude 4 "), std::string::npos)
+      << describe(fraction);
 }
 
 // A = x + y <= 3 (triangle), B = y <= 2x/3 (triangle), C = [1, 2] x [0, 2]. A ∪ B has the
