@@ -72,19 +72,12 @@ inline double unit_scale(const MultiPolygon& mp) {
 // products of coordinate differences can decide (issue 12 asks GEOS there).
 inline bool in_geos_range(const MultiPolygon& mp) {
   const auto fits = [](double v) { return v == 0 || (std::fabs(v) >= 1e-200 && std::fabs(v) <= 1e200); };
-  for (const auto& p : mp) {
-    for (const auto* r : {&p.shell}) {
-      for (const Point& q : *r) {
-        if (!fits(q.x) || !fits(q.y)) return false;
-      }
-    }
-    for (const auto& h : p.holes) {
-      for (const Point& q : h) {
-        if (!fits(q.x) || !fits(q.y)) return false;
-      }
-    }
-  }
-  return true;
+  const auto ring_fits = [&](const Ring& r) {
+    return std::all_of(r.begin(), r.end(), [&](const Point& q) { return fits(q.x) && fits(q.y); });
+  };
+  return std::all_of(mp.begin(), mp.end(), [&](const OgcPolygon& p) {
+    return ring_fits(p.shell) && std::all_of(p.holes.begin(), p.holes.end(), ring_fits);
+  });
 }
 
 }  // namespace mk::test
