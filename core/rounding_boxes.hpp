@@ -8,9 +8,10 @@
 // changing its topology: the rounded rings are valid with the same holes and touches. This
 // is snap rounding's condition with nothing to reroute: every vertex at least a pixel away
 // from the edges it is not on [HP02], the pixel being its box, and rounding a continuous
-// deformation [GM98]. A pair is cleared when the boxes separate along x, along y, or along
-// the edge's normal, each proved with a margin that covers the rounding errors of its
-// evaluation (for the normal, the orientation determinant's error bound [Sh97]). Candidate
+// deformation [GM98]. A pair is cleared when the vertex's box and the hull separate along
+// x or y (bounds of each box rounded outward once, the hull's those of its two boxes'
+// union), or along the edge's normal, proved with a margin that covers the rounding
+// errors of its evaluation (the orientation determinant's error bound [Sh97]). Candidate
 // pairs come from a uniform grid of the rounded points.
 // [HP02] (vertices half a pixel from edges they are not on) [GM98] [Sh97] [MK89 §3.3]
 // Preconditions: the exact result is valid (to_output.hpp); K gives each vertex a box that
@@ -59,14 +60,35 @@ inline double next_down(double v) { return -next_up(-v); }
 // An upper bound on a nonnegative real that one rounding to nearest made v.
 inline double rounded_up(double v) { return v > 0 ? next_up(v) : 0.0; }
 
-// Proves t < a - b exactly, for doubles a, b and a normal double t >= DBL_MIN: a - b is
-// computed with a relative error of at most 2^-53 (exactly when tiny), t * (1 + 2^-50) with
-// the same, and the factor covers both. Overflow gives infinity or false, never true
-// wrongly.
-inline bool proved_less(double t, double a, double b) { return t * (1 + 0x1p-50) < a - b; }
+inline double below(double v) { return next_down(v); }
+inline double above(double v) { return next_up(v); }
 
-// Whether vertex box v is clear of the convex hull of the boxes of a and b.
-inline bool clear_of_edge(const RoundedVertexBox& v, const RoundedVertexBox& a, const RoundedVertexBox& b) {
+// Bounds of a box in x and y.
+struct BoxBounds {
+  double x0, x1, y0, y1;
+};
+
+// Bounds holding vertex v's box: its ends computed and rounded outward (the next double
+// beyond the nearest holds the exact end; infinity stays).
+inline BoxBounds vertex_bounds(const RoundedVertexBox& v) {
+  return {below(v.at.x - v.rx), above(v.at.x + v.rx), below(v.at.y - v.ry), above(v.at.y + v.ry)};
+}
+
+// Bounds holding the convex hull of two boxes, from bounds holding each: those of their union.
+inline BoxBounds hull_bounds(const BoxBounds& a, const BoxBounds& b) {
+  return {std::min(a.x0, b.x0), std::max(a.x1, b.x1), std::min(a.y0, b.y0), std::max(a.y1, b.y1)};
+}
+
+// Whether two bounds are apart along x or along y (so are the boxes they hold). Without a
+// branch per comparison: the grid asks it of every vertex in an edge's cells, and most are
+// apart.
+inline bool bounds_apart(const BoxBounds& p, const BoxBounds& q) {
+  return (p.x1 < q.x0) | (q.x1 < p.x0) | (p.y1 < q.y0) | (q.y1 < p.y0);
+}
+
+// Whether vertex box v is clear of the convex hull of the boxes of a and b, along the
+// normal of segment ab (clear_of_edge's second test).
+inline bool clear_along_normal(const RoundedVertexBox& v, const RoundedVertexBox& a, const RoundedVertexBox& b) {
   // Half-sizes of v's box plus the hull's: the hull lies in segment ab widened by the larger
   // box of its ends, and the boxes meet when v's point lies in ab widened by both.
   const double tx = std::max(rounded_up(v.rx + std::max(a.rx, b.rx)), DBL_MIN);
@@ -74,10 +96,6 @@ inline bool clear_of_edge(const RoundedVertexBox& v, const RoundedVertexBox& a, 
   const Point& p = v.at;
   const Point& u = a.at;
   const Point& w = b.at;
-  if (proved_less(tx, std::min(u.x, w.x), p.x) || proved_less(tx, p.x, std::max(u.x, w.x)) ||
-      proved_less(ty, std::min(u.y, w.y), p.y) || proved_less(ty, p.y, std::max(u.y, w.y))) {
-    return true;
-  }
   // Along the normal: |(w - u) x (p - u)| above the widening's reach |dx| ty + |dy| tx. The
   // determinant's error is at most (3 + 16 eps) eps (|l| + |r|) [Sh97]; 2^-50 covers it and
   // the rounding of this bound, 1 + 2^-48 the rounding of the reach. Products that
@@ -89,12 +107,15 @@ inline bool clear_of_edge(const RoundedVertexBox& v, const RoundedVertexBox& a, 
   return std::abs(l - r) > reach * (1 + 0x1p-48) + (std::abs(l) + std::abs(r)) * 0x1p-50 + 0x1p-1000;
 }
 
+// Whether vertex box v is clear of the convex hull of the boxes of a and b: apart along x
+// or y, else along the segment's normal.
+inline bool clear_of_edge(const RoundedVertexBox& v, const RoundedVertexBox& a, const RoundedVertexBox& b) {
+  return bounds_apart(vertex_bounds(v), hull_bounds(vertex_bounds(a), vertex_bounds(b))) || clear_along_normal(v, a, b);
+}
+
 // Whether the boxes of an edge's two ends are apart (the edge never shrinks to a point).
 inline bool ends_apart(const RoundedVertexBox& a, const RoundedVertexBox& b) {
-  const double tx = std::max(rounded_up(a.rx + b.rx), DBL_MIN);
-  const double ty = std::max(rounded_up(a.ry + b.ry), DBL_MIN);
-  return proved_less(tx, a.at.x, b.at.x) || proved_less(tx, b.at.x, a.at.x) || proved_less(ty, a.at.y, b.at.y) ||
-         proved_less(ty, b.at.y, a.at.y);
+  return bounds_apart(vertex_bounds(a), vertex_bounds(b));
 }
 
 // The cell of scaled coordinate f on an axis of n cells: floor(f) clamped to [0, n - 1], NaN
@@ -144,9 +165,6 @@ class BoxGrid {
   int nx_ = 1, ny_ = 1;
 };
 
-inline double below(double v) { return next_down(v); }
-inline double above(double v) { return next_up(v); }
-
 // The certificate over vertex boxes and edges between them (indices into `v`), with the
 // candidate pairs from the grid, or from all pairs (`all_pairs`, for tests). A vertex whose
 // box is its point has not moved; a vertex and an edge of which none moved are never
@@ -162,11 +180,30 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     const auto& b = v[static_cast<std::size_t>(k)];
     return b.rx != 0 || b.ry != 0;
   };
-  for (const auto& b : v) {
-    if (!std::isfinite(b.rx) || !std::isfinite(b.ry)) return false;
-  }
+  // Every vertex's bounds, and how many moved (in parts, on the threads).
+  const auto bounds = std::make_unique_for_overwrite<BoxBounds[]>(v.size());
   std::size_t num_moved = 0;
-  for (std::size_t k = 0; k < v.size(); ++k) num_moved += moved(static_cast<int>(k));
+  {
+    const std::size_t parts = threads > 1 && v.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
+    std::vector<std::size_t> moved_in(parts, 0);
+    std::atomic<bool> finite{true};
+    run_tasks(threads, parts, [&](std::size_t part) {
+      std::size_t count = 0;
+      bool ok = true;
+      for (std::size_t k = v.size() * part / parts, last = v.size() * (part + 1) / parts; k < last; ++k) {
+        ok = ok && std::isfinite(v[k].rx) && std::isfinite(v[k].ry);
+        bounds[k] = vertex_bounds(v[k]);
+        count += moved(static_cast<int>(k));
+      }
+      moved_in[part] = count;
+      if (!ok) finite = false;
+    });
+    if (!finite) return false;
+    for (const std::size_t c : moved_in) num_moved += c;
+  }
+  const auto edge_hull = [&](const std::array<int, 2>& e) {
+    return hull_bounds(bounds[static_cast<std::size_t>(e[0])], bounds[static_cast<std::size_t>(e[1])]);
+  };
   // Every edge keeps two ends apart, and how many edges have a moved end (in parts, on the
   // threads).
   std::size_t moved_edges = 0;
@@ -179,7 +216,7 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
       bool ok = true;
       for (std::size_t i = edges.size() * part / parts, last = edges.size() * (part + 1) / parts; i < last; ++i) {
         const auto& [a, b] = edges[i];
-        ok = ok && ends_apart(v[static_cast<std::size_t>(a)], v[static_cast<std::size_t>(b)]);
+        ok = ok && bounds_apart(bounds[static_cast<std::size_t>(a)], bounds[static_cast<std::size_t>(b)]);
         count += moved(a) || moved(b);
       }
       moved_in[part] = count;
@@ -190,8 +227,9 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   }
   const auto clear = [&](int k, const std::array<int, 2>& e) {
     if (k == e[0] || k == e[1]) return true;
-    const auto& vb = v[static_cast<std::size_t>(k)];
-    return clear_of_edge(vb, v[static_cast<std::size_t>(e[0])], v[static_cast<std::size_t>(e[1])]);
+    // clear_of_edge, with the bounds made once.
+    return bounds_apart(bounds[static_cast<std::size_t>(k)], edge_hull(e)) ||
+           clear_along_normal(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>(e[0])], v[static_cast<std::size_t>(e[1])]);
   };
   if (all_pairs) {
     for (const auto& e : edges) {
@@ -208,29 +246,28 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   const BoxGrid grid(v, list_edges ? num_moved + moved_edges : v.size());
   const std::size_t cells = static_cast<std::size_t>(grid.cells());
   std::size_t budget = 64 * (v.size() + edges.size()) + (1u << 20);
-  // The cells an edge's hull may meet, each once: the edge cut into pieces about one cell
-  // long, each piece's box widened by the hull's half-sizes and by the error of computing
-  // the piece's ends (u + t (w - u): at most 16 eps (|u| + |w|) per coordinate). f(cell)
-  // returns false to stop; so does this, when `steps` (every cell looked at, the ones already
-  // visited included: a shallow crossing's wide box can make each piece span the grid)
-  // passes `limit`.
-  const auto for_each_cell = [&](const std::array<int, 2>& e, auto&& f, std::size_t& steps, std::size_t limit) {
+  // The cells an edge's hull may meet, each once, as runs of consecutive cells in a row: the
+  // edge cut into pieces about one cell long, each piece's box widened by the hull's
+  // half-sizes and by the error of computing the piece's ends (u + t (w - u): at most
+  // 16 eps (|u| + |w|) per coordinate). f(row, c0, c1) returns false to stop; so does this,
+  // when `steps` (every cell looked at, the ones already visited included: a shallow
+  // crossing's wide box can make each piece span the grid) passes `limit`.
+  const auto for_each_run = [&](const std::array<int, 2>& e, auto&& f, std::size_t& steps, std::size_t limit) {
     const auto& a = v[static_cast<std::size_t>(e[0])];
     const auto& b = v[static_cast<std::size_t>(e[1])];
     const Point u = a.at, w = b.at;
-    const double mx = rounded_up(rounded_up(std::max(a.rx, b.rx) + rounded_up(0x1p-49 * (std::abs(u.x) + std::abs(w.x)))) + DBL_MIN);
-    const double my = rounded_up(rounded_up(std::max(a.ry, b.ry) + rounded_up(0x1p-49 * (std::abs(u.y) + std::abs(w.y)))) + DBL_MIN);
-    // An edge whose widened box meets at most four cells visits them all (the pieces' boxes
-    // lie in it); a longer one goes piece by piece.
+    const auto run = [&](int r, int c0, int c1) {
+      steps += static_cast<std::size_t>(c1 - c0 + 1);
+      return steps <= limit && f(r, c0, c1);
+    };
+    // An edge whose hull's bounds meet at most four cells visits them all; a longer one goes
+    // piece by piece.
     {
-      const int c0 = grid.col(below(std::min(u.x, w.x) - mx)), c1 = grid.col(above(std::max(u.x, w.x) + mx));
-      const int r0 = grid.row(below(std::min(u.y, w.y) - my)), r1 = grid.row(above(std::max(u.y, w.y) + my));
+      const BoxBounds hull = edge_hull(e);
+      const int c0 = grid.col(hull.x0), c1 = grid.col(hull.x1), r0 = grid.row(hull.y0), r1 = grid.row(hull.y1);
       if ((c1 - c0 + 1) * (r1 - r0 + 1) <= 4) {
         for (int r = r0; r <= r1; ++r) {
-          for (int c = c0; c <= c1; ++c) {
-            if (++steps > limit) return false;
-            if (!f(static_cast<std::size_t>(grid.cell(c, r)))) return false;
-          }
+          if (!run(r, c0, c1)) return false;
         }
         return true;
       }
@@ -238,7 +275,10 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     // As many pieces as the edge crosses cells along its shorter axis: a piece's box then
     // spans about two cells across, so it visits about twice the cells the edge passes,
     // while each piece's box costs more than visiting a cell (a long edge along a row is
-    // one or two pieces, not one per column).
+    // one or two pieces, not one per column). Per row, the cells outside the previous
+    // piece's box: none, one run or two.
+    const double mx = rounded_up(rounded_up(std::max(a.rx, b.rx) + rounded_up(0x1p-49 * (std::abs(u.x) + std::abs(w.x)))) + DBL_MIN);
+    const double my = rounded_up(rounded_up(std::max(a.ry, b.ry) + rounded_up(0x1p-49 * (std::abs(u.y) + std::abs(w.y)))) + DBL_MIN);
     const int pieces = std::min(std::abs(grid.col(u.x) - grid.col(w.x)), std::abs(grid.row(u.y) - grid.row(w.y))) + 1;
     const double dx = w.x - u.x, dy = w.y - u.y;
     Point p = u;
@@ -249,31 +289,38 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
       const int c0 = grid.col(below(std::min(p.x, q.x) - mx)), c1 = grid.col(above(std::max(p.x, q.x) + mx));
       const int r0 = grid.row(below(std::min(p.y, q.y) - my)), r1 = grid.row(above(std::max(p.y, q.y) + my));
       for (int r = r0; r <= r1; ++r) {
-        for (int c = c0; c <= c1; ++c) {
-          if (++steps > limit) return false;
-          if (pc0 <= c && c <= pc1 && pr0 <= r && r <= pr1) continue;
-          if (!f(static_cast<std::size_t>(grid.cell(c, r)))) return false;
+        if (r < pr0 || r > pr1 || pc1 < c0 || c1 < pc0) {
+          if (!run(r, c0, c1)) return false;
+          continue;
         }
+        steps += static_cast<std::size_t>(std::min(c1, pc1) - std::max(c0, pc0) + 1);  // looked at, visited before
+        if (c0 < pc0 && !run(r, c0, pc0 - 1)) return false;
+        if (pc1 < c1 && !run(r, pc1 + 1, c1)) return false;
+        if (steps > limit) return false;
       }
       pc0 = c0, pc1 = c1, pr0 = r0, pr1 = r1;
       p = q;
     }
     return true;
   };
-  // The vertices listed: in each cell its box meets, per cell the moved ones first. Each
-  // listed vertex's cells are found on the threads; the lists are then counted and filled in
-  // bands of rows (consecutive cells), each band by one task going through the vertices in
-  // order: the same lists in the same order on any number of threads.
-  std::vector<int> start(2 * cells + 1, 0);
-  const auto span = [&](std::size_t k) {  // columns and rows of the cells vertex k's box meets
-    const auto& b = v[k];
-    return std::array<int, 4>{grid.col(below(b.at.x - b.rx)), grid.col(above(b.at.x + b.rx)), grid.row(below(b.at.y - b.ry)),
-                              grid.row(above(b.at.y + b.ry))};
+  // The same cells one by one.
+  const auto for_each_cell = [&](const std::array<int, 2>& e, auto&& f, std::size_t& steps, std::size_t limit) {
+    return for_each_run(e, [&](int r, int c0, int c1) {
+      for (int c = c0; c <= c1; ++c) {
+        if (!f(static_cast<std::size_t>(grid.cell(c, r)))) return false;
+      }
+      return true;
+    }, steps, limit);
   };
+  // The vertices listed, by their boxes' bounds and index (complemented for a vertex that
+  // did not move), in each cell their box meets, the cells' lists one after another (so
+  // the cells of a run in a row are one range). Each listed vertex's cells are found on the
+  // threads; the lists are then counted and filled in bands of rows (consecutive cells),
+  // each band by one task going through the vertices in order: the same lists in the same
+  // order on any number of threads.
+  std::vector<int> start(cells + 1, 0);
+  std::vector<int> moved_in_cell(cells, 0);
   const auto listed = [&](std::size_t k) { return moved(static_cast<int>(k)) || !list_edges; };
-  const auto list = [&](std::size_t k, int c, int r) {  // the list of vertex k in cell (c, r)
-    return 2 * static_cast<std::size_t>(grid.cell(c, r)) + (moved(static_cast<int>(k)) ? 0 : 1);
-  };
   const unsigned list_threads = threads_for(v.size(), threads);
   // None (c1 < c0) for a vertex not listed; each written below (no zeroing pass first).
   const auto spans = std::make_unique_for_overwrite<std::array<int, 4>[]>(v.size());
@@ -288,7 +335,8 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
           spans[k] = {0, -1, 0, -1};
           continue;
         }
-        const auto& sp = spans[k] = span(k);
+        const BoxBounds& bk = bounds[k];
+        const auto& sp = spans[k] = {grid.col(bk.x0), grid.col(bk.x1), grid.row(bk.y0), grid.row(bk.y1)};
         count += static_cast<std::size_t>(sp[1] - sp[0] + 1) * static_cast<std::size_t>(sp[3] - sp[2] + 1);
       }
       part_entries[part] = count;
@@ -313,7 +361,11 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     }
   };
   run_tasks(list_threads, static_cast<std::size_t>(bands), [&](std::size_t band) {
-    for_each_in_band(static_cast<int>(band), [&](std::size_t k, int c, int r) { ++start[list(k, c, r) + 1]; });
+    for_each_in_band(static_cast<int>(band), [&](std::size_t k, int c, int r) {
+      const auto cell = static_cast<std::size_t>(grid.cell(c, r));
+      ++start[cell + 1];
+      moved_in_cell[cell] += moved(static_cast<int>(k));
+    });
   });
   // The work the edges will do, estimated before doing it: each vertex brings about two edges
   // to its cell, and each edge there tests the cell's moved vertices (and the others when an
@@ -321,38 +373,31 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
   {
     std::size_t estimate = 0;
     for (std::size_t c = 0; c < cells; ++c) {
-      const std::size_t m = static_cast<std::size_t>(start[2 * c + 1]), o = static_cast<std::size_t>(start[2 * c + 2]);
+      const std::size_t m = static_cast<std::size_t>(moved_in_cell[c]), o = static_cast<std::size_t>(start[c + 1]) - m;
       estimate += 2 * m * (m + o) + (m > 0 ? 2 * m * o : 0);
     }
     if (estimate > budget) return false;
   }
   for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-  // Each listed vertex with a copy of its point (the cells are read in the edges' order, the
-  // boxes are stored in the cycles'), and per cell the largest half-sizes listed there. Both
-  // arrays are written first by the bands' tasks, not zeroed before (fresh pages cost more
-  // than the writes: star 1e4's 10 MB took 5 ms to zero); start[l] is list l's cursor while
-  // filling, and ends at the start of list l + 1, so it moves back by one after.
-  struct Listed {
-    double x, y;
-    int k;
-  };
-  const auto in_cell = std::make_unique_for_overwrite<Listed[]>(entries);
-  const auto cell_reach = std::make_unique_for_overwrite<std::array<double, 2>[]>(cells);
+  // Each listed vertex's bounds and index, copied in (the cells are read in the edges'
+  // order, the boxes are stored in the cycles'). Both arrays are written first by the
+  // bands' tasks, not zeroed before (fresh pages cost more than the writes: star 1e4's
+  // 10 MB took 5 ms to zero); start[c] is cell c's cursor while filling, and ends at the
+  // start of cell c + 1, so it moves back by one after.
+  const auto in_cell = std::make_unique_for_overwrite<BoxBounds[]>(entries);
+  const auto in_cell_k = std::make_unique_for_overwrite<int[]>(entries);
   run_tasks(list_threads, static_cast<std::size_t>(bands), [&](std::size_t band) {
-    const auto [r_lo, r_hi] = band_rows(static_cast<int>(band));
-    const std::size_t row_cells = cells / static_cast<std::size_t>(grid.rows());
-    std::fill(cell_reach.get() + row_cells * static_cast<std::size_t>(r_lo),
-              cell_reach.get() + row_cells * static_cast<std::size_t>(r_hi), std::array<double, 2>{0.0, 0.0});
     for_each_in_band(static_cast<int>(band), [&](std::size_t k, int c, int r) {
-      in_cell[static_cast<std::size_t>(start[list(k, c, r)]++)] = {v[k].at.x, v[k].at.y, static_cast<int>(k)};
-      auto& reach = cell_reach[static_cast<std::size_t>(grid.cell(c, r))];
-      reach = {std::max(reach[0], v[k].rx), std::max(reach[1], v[k].ry)};
+      const auto at = static_cast<std::size_t>(start[static_cast<std::size_t>(grid.cell(c, r))]++);
+      in_cell[at] = bounds[k];
+      in_cell_k[at] = moved(static_cast<int>(k)) ? static_cast<int>(k) : ~static_cast<int>(k);
     });
   });
   std::copy_backward(start.begin(), start.end() - 1, start.end());
   start[0] = 0;
-  // Every edge against the vertices listed in its cells (the moved ones, and the others when
-  // an end moved and they are listed).
+  // Every edge against the vertices listed in its runs of cells (the moved ones, and the
+  // others when an end moved and they are listed): the boxes apart from the edge's hull's
+  // are passed over by four comparisons (as clear_of_edge would pass them), the rest tested.
   const std::size_t parts = threads > 1 && edges.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
   const std::size_t part_budget = budget / parts;
   std::atomic<bool> refused{false};
@@ -361,27 +406,39 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     const std::size_t first = edges.size() * part / parts, last = edges.size() * (part + 1) / parts;
     for (std::size_t i = first; i < last && !refused.load(std::memory_order_relaxed); ++i) {
       const auto& e = edges[i];
-      const std::size_t lists = moved(e[0]) || moved(e[1]) ? 2 : 1;  // the moved vertices, or all listed
+      const bool edge_moved = moved(e[0]) || moved(e[1]);  // then all listed vertices, else the moved ones
       const RoundedVertexBox& a = v[static_cast<std::size_t>(e[0])];
       const RoundedVertexBox& b = v[static_cast<std::size_t>(e[1])];
-      const double x0 = std::min(a.at.x, b.at.x), x1 = std::max(a.at.x, b.at.x);
-      const double y0 = std::min(a.at.y, b.at.y), y1 = std::max(a.at.y, b.at.y);
-      const double arx = std::max(a.rx, b.rx), ary = std::max(a.ry, b.ry);
-      const bool ok = for_each_cell(e, [&](std::size_t cell) {
-        const int s = start[2 * cell], end = start[2 * cell + lists];
-        work += 1 + static_cast<std::size_t>(end - s);
-        if (s == end) return work <= part_budget;  // an empty cell (most of a long edge's)
-        // clear_of_edge's first four tests with the cell's largest half-sizes: each side is
-        // monotone in the half-size, so passing here passes there, and most vertices of
-        // the cell are passed over without the rest of the test (the same verdicts).
-        const double tx = std::max(rounded_up(cell_reach[cell][0] + arx), DBL_MIN) * (1 + 0x1p-50);
-        const double ty = std::max(rounded_up(cell_reach[cell][1] + ary), DBL_MIN) * (1 + 0x1p-50);
-        for (int k = s; k < end; ++k) {
-          const Listed& l = in_cell[static_cast<std::size_t>(k)];
-          const bool apart = (tx < x0 - l.x) | (tx < l.x - x1) | (ty < y0 - l.y) | (ty < l.y - y1);
-          if (apart | (l.k == e[0]) | (l.k == e[1])) continue;
-          if (!clear_of_edge(v[static_cast<std::size_t>(l.k)], a, b)) return false;
+      const BoxBounds hull = edge_hull(e);
+      // The entries whose bounds meet the hull's, gathered without a branch per entry (most
+      // are apart, which a branch would mispredict often), then tested.
+      const auto scan = [&](int from, int to) {
+        work += static_cast<std::size_t>(to - from);
+        constexpr int kChunk = 64;
+        int near[kChunk];
+        for (int chunk = from; chunk < to; chunk += kChunk) {
+          const int last = std::min(to, chunk + kChunk);
+          int found = 0;
+          for (int k = chunk; k < last; ++k) {
+            near[found] = k;
+            found += !bounds_apart(in_cell[static_cast<std::size_t>(k)], hull);
+          }
+          for (int j = 0; j < found; ++j) {
+            int id = in_cell_k[static_cast<std::size_t>(near[j])];
+            if (id < 0) {
+              if (!edge_moved) continue;
+              id = ~id;
+            }
+            if (id == e[0] || id == e[1]) continue;
+            if (!clear_along_normal(v[static_cast<std::size_t>(id)], a, b)) return false;
+          }
         }
+        return true;
+      };
+      const bool ok = for_each_run(e, [&](int r, int c0, int c1) {
+        const std::size_t from = static_cast<std::size_t>(grid.cell(c0, r)), to = static_cast<std::size_t>(grid.cell(c1, r)) + 1;
+        ++work;
+        if (!scan(start[from], start[to])) return false;
         return work <= part_budget;
       }, steps, part_budget);
       if (!ok) refused = true;

@@ -38,16 +38,48 @@ std::uint64_t test_seed(std::uint64_t fallback) {
   return seed;
 }
 
-// Exactly: whether v's box meets segment ab widened by the larger of a's and b's boxes.
+// Exactly: whether v's box meets the convex hull of a's and b's boxes (the region the edge
+// sweeps while its ends move within their boxes). By separating axes: two convex regions
+// are apart when some normal of an edge of either separates them, here x, y and the
+// normals of the hull's edges.
 bool meets_exactly(const RoundedVertexBox& v, const RoundedVertexBox& a, const RoundedVertexBox& b) {
-  const mpq_class tx = mpq_class(v.rx) + std::max(mpq_class(a.rx), mpq_class(b.rx));
-  const mpq_class ty = mpq_class(v.ry) + std::max(mpq_class(a.ry), mpq_class(b.ry));
-  const mpq_class px(v.at.x), py(v.at.y), ux(a.at.x), uy(a.at.y), wx(b.at.x), wy(b.at.y);
-  if (px + tx < std::min(ux, wx) || px - tx > std::max(ux, wx)) return false;
-  if (py + ty < std::min(uy, wy) || py - ty > std::max(uy, wy)) return false;
-  const mpq_class dx = wx - ux, dy = wy - uy;
-  const mpq_class cross = dx * (py - uy) - dy * (px - ux);
-  return abs(cross) <= abs(dx) * ty + abs(dy) * tx;
+  struct Q {
+    mpq_class x, y;
+  };
+  const auto corners = [](const RoundedVertexBox& c) {
+    const mpq_class x(c.at.x), y(c.at.y), rx(c.rx), ry(c.ry);
+    return std::vector<Q>{{x - rx, y - ry}, {x + rx, y - ry}, {x + rx, y + ry}, {x - rx, y + ry}};
+  };
+  std::vector<Q> pts = corners(a);
+  for (const Q& q : corners(b)) pts.push_back(q);
+  const std::vector<Q> box = corners(v);
+  // The hull, counterclockwise (Andrew's monotone chain, exact).
+  std::sort(pts.begin(), pts.end(), [](const Q& p, const Q& q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
+  const auto cross = [](const Q& o, const Q& p, const Q& q) -> mpq_class { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
+  std::vector<Q> hull;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t floor = hull.size();
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const Q& p = pass == 0 ? pts[i] : pts[pts.size() - 1 - i];
+      while (hull.size() >= floor + 2 && sgn(cross(hull[hull.size() - 2], hull.back(), p)) <= 0) hull.pop_back();
+      hull.push_back(p);
+    }
+    hull.pop_back();
+  }
+  // Along x and y.
+  mpq_class hx0 = hull[0].x, hx1 = hull[0].x, hy0 = hull[0].y, hy1 = hull[0].y;
+  for (const Q& h : hull) hx0 = std::min(hx0, h.x), hx1 = std::max(hx1, h.x), hy0 = std::min(hy0, h.y), hy1 = std::max(hy1, h.y);
+  if (box[2].x < hx0 || box[0].x > hx1 || box[2].y < hy0 || box[0].y > hy1) return false;
+  // Along each hull edge's outward normal: the box wholly beyond the edge's line.
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Q& p = hull[i];
+    const Q& q = hull[(i + 1) % hull.size()];
+    if (p.x == q.x && p.y == q.y) continue;
+    bool beyond = true;
+    for (const Q& c : box) beyond = beyond && sgn(cross(p, q, c)) < 0;
+    if (beyond) return false;
+  }
+  return true;
 }
 
 bool ends_meet_exactly(const RoundedVertexBox& a, const RoundedVertexBox& b) {
