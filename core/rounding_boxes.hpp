@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -108,9 +109,14 @@ inline bool clear_along_normal(const RoundedVertexBox& v, const RoundedVertexBox
 }
 
 // Whether vertex box v is clear of the convex hull of the boxes of a and b: apart along x
-// or y, else along the segment's normal.
+// or y, else along the segment's normal. With the bounds made already (v's, and the hull's
+// from a's and b's), or made here.
+inline bool clear_of_edge(const BoxBounds& v_bounds, const BoxBounds& hull, const RoundedVertexBox& v, const RoundedVertexBox& a,
+                          const RoundedVertexBox& b) {
+  return bounds_apart(v_bounds, hull) || clear_along_normal(v, a, b);
+}
 inline bool clear_of_edge(const RoundedVertexBox& v, const RoundedVertexBox& a, const RoundedVertexBox& b) {
-  return bounds_apart(vertex_bounds(v), hull_bounds(vertex_bounds(a), vertex_bounds(b))) || clear_along_normal(v, a, b);
+  return clear_of_edge(vertex_bounds(v), hull_bounds(vertex_bounds(a), vertex_bounds(b)), v, a, b);
 }
 
 // Whether the boxes of an edge's two ends are apart (the edge never shrinks to a point).
@@ -180,56 +186,48 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
     const auto& b = v[static_cast<std::size_t>(k)];
     return b.rx != 0 || b.ry != 0;
   };
-  // Every vertex's bounds, and how many moved (in parts, on the threads).
-  const auto bounds = std::make_unique_for_overwrite<BoxBounds[]>(v.size());
-  std::size_t num_moved = 0;
-  {
-    const std::size_t parts = threads > 1 && v.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
-    std::vector<std::size_t> moved_in(parts, 0);
-    std::atomic<bool> finite{true};
+  // Over [0, n) in parts on the threads: how many i step(i, ok) counts, or none when some
+  // step cleared ok.
+  const auto tally = [&](std::size_t n, auto&& step) -> std::optional<std::size_t> {
+    const std::size_t parts = threads > 1 && n >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
+    std::vector<std::size_t> counts(parts, 0);
+    std::atomic<bool> all_ok{true};
     run_tasks(threads, parts, [&](std::size_t part) {
       std::size_t count = 0;
       bool ok = true;
-      for (std::size_t k = v.size() * part / parts, last = v.size() * (part + 1) / parts; k < last; ++k) {
-        ok = ok && std::isfinite(v[k].rx) && std::isfinite(v[k].ry);
-        bounds[k] = vertex_bounds(v[k]);
-        count += moved(static_cast<int>(k));
-      }
-      moved_in[part] = count;
-      if (!ok) finite = false;
+      for (std::size_t i = n * part / parts, last = n * (part + 1) / parts; i < last; ++i) count += step(i, ok);
+      counts[part] = count;
+      if (!ok) all_ok = false;
     });
-    if (!finite) return false;
-    for (const std::size_t c : moved_in) num_moved += c;
-  }
+    if (!all_ok) return std::nullopt;
+    std::size_t total = 0;
+    for (const std::size_t c : counts) total += c;
+    return total;
+  };
+  // Every vertex's bounds, and how many moved.
+  const auto bounds = std::make_unique_for_overwrite<BoxBounds[]>(v.size());
+  const std::optional<std::size_t> moved_count = tally(v.size(), [&](std::size_t k, bool& ok) {
+    ok = ok && std::isfinite(v[k].rx) && std::isfinite(v[k].ry);
+    bounds[k] = vertex_bounds(v[k]);
+    return moved(static_cast<int>(k));
+  });
+  if (!moved_count) return false;
+  const std::size_t num_moved = *moved_count;
   const auto edge_hull = [&](const std::array<int, 2>& e) {
     return hull_bounds(bounds[static_cast<std::size_t>(e[0])], bounds[static_cast<std::size_t>(e[1])]);
   };
-  // Every edge keeps two ends apart, and how many edges have a moved end (in parts, on the
-  // threads).
-  std::size_t moved_edges = 0;
-  {
-    const std::size_t parts = threads > 1 && edges.size() >= kParallelWork ? 8 * static_cast<std::size_t>(threads) : 1;
-    std::vector<std::size_t> moved_in(parts, 0);
-    std::atomic<bool> apart{true};
-    run_tasks(threads, parts, [&](std::size_t part) {
-      std::size_t count = 0;
-      bool ok = true;
-      for (std::size_t i = edges.size() * part / parts, last = edges.size() * (part + 1) / parts; i < last; ++i) {
-        const auto& [a, b] = edges[i];
-        ok = ok && bounds_apart(bounds[static_cast<std::size_t>(a)], bounds[static_cast<std::size_t>(b)]);
-        count += moved(a) || moved(b);
-      }
-      moved_in[part] = count;
-      if (!ok) apart = false;
-    });
-    if (!apart) return false;
-    for (const std::size_t c : moved_in) moved_edges += c;
-  }
+  // Every edge keeps two ends apart, and how many edges have a moved end.
+  const std::optional<std::size_t> moved_edge_count = tally(edges.size(), [&](std::size_t i, bool& ok) {
+    const auto& [a, b] = edges[i];
+    ok = ok && bounds_apart(bounds[static_cast<std::size_t>(a)], bounds[static_cast<std::size_t>(b)]);
+    return moved(a) || moved(b);
+  });
+  if (!moved_edge_count) return false;
+  const std::size_t moved_edges = *moved_edge_count;
   const auto clear = [&](int k, const std::array<int, 2>& e) {
     if (k == e[0] || k == e[1]) return true;
-    // clear_of_edge, with the bounds made once.
-    return bounds_apart(bounds[static_cast<std::size_t>(k)], edge_hull(e)) ||
-           clear_along_normal(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>(e[0])], v[static_cast<std::size_t>(e[1])]);
+    const auto at = [&](int j) -> const RoundedVertexBox& { return v[static_cast<std::size_t>(j)]; };
+    return clear_of_edge(bounds[static_cast<std::size_t>(k)], edge_hull(e), at(k), at(e[0]), at(e[1]));
   };
   if (all_pairs) {
     for (const auto& e : edges) {
