@@ -82,6 +82,15 @@ struct EarlyIntersections {
   std::array<std::vector<int>, 2> ring_start;  // per polygon, per cycle: its first point as input
 };
 
+// What step 3 proved of the arrangement for the rounding certificate (separation_rules.hpp):
+// when `threshold` T is positive, along every input edge consecutive vertices are more than
+// T apart, and each crossing's or ring corner's neighbours more than T from its other edge,
+// for every crossing's box extent at most `half_size_bound` R (T above 4R).
+struct Separation {
+  double threshold = 0;
+  double half_size_bound = 0;
+};
+
 template <Kernel K>
 struct Arrangement {
   // Input points of A and B, deduplicated; the id of a point is its index, and ids follow
@@ -94,6 +103,8 @@ struct Arrangement {
   std::array<PreparedPolygon, 2> polygon;
   // Step 3's findings made while preparing, when they hold (see EarlyIntersections).
   EarlyIntersections<typename K::Vertex> early;
+  // Step 3's proof of rules N and C, when it made one.
+  Separation separation;
 
   int num_points() const { return static_cast<int>(points.size()); }
   bool is_input_point(int id) const { return id < num_points(); }

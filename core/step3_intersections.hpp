@@ -21,8 +21,9 @@
 #include "core/edge_insertions.hpp"
 #include "core/error.hpp"
 #include "core/pairs.hpp"
-#include "core/red_blue.hpp"
 #include "core/parallel.hpp"
+#include "core/red_blue.hpp"
+#include "core/separation_rules.hpp"
 #include "core/sorting.hpp"
 #include "predicates/segments.hpp"
 
@@ -245,8 +246,13 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
     }
   }
 
+  // Rules N and C of the rounding certificate, tested on each edge's vertices as they are
+  // put in order (separation_rules.hpp); each polygon stops testing at its first refusal.
+  const SeparationRules<K> rules(arr, threads);
+  std::array<bool, 2> separated{rules.active(), rules.active()};
   run_tasks(threads_for(ea.size() + eb.size(), threads), 2, [&](std::size_t g) {
     PreparedPolygon& poly = arr.polygon[g];
+    bool holds = separated[g];
     EdgeInsertions& ins = inserted[g];
     ins.group(static_cast<int>(poly.edges.size()));
     // A local vector: its end stays in a register. Fragments are made in place
@@ -262,6 +268,7 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
         // Edges without insertions, the common case, are one fragment each.
         for (const int plain_end = std::min(end, ins.next_edge()); e < plain_end; ++e) {
           detail::add_fragment(fragments, poly.edges[e].src, poly.edges[e].dst, e);
+          if (holds) holds = rules.edge_holds(arr, static_cast<int>(g), e, poly.cycle_first_edge[c], end, {});
         }
         if (e == end) break;
         const Edge& edge = poly.edges[e];
@@ -297,12 +304,15 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
             from = id;
           }
         }
+        if (holds) holds = rules.edge_holds(arr, static_cast<int>(g), e, poly.cycle_first_edge[c], end, on_edge);
         detail::add_fragment(fragments, from, edge.dst, e);
       }
       poly.cycle_first_fragment.push_back(static_cast<int>(fragments.size()));
     }
     poly.fragments = std::move(fragments);
+    separated[g] = holds;
   });
+  arr.separation = separated[0] && separated[1] ? Separation{rules.threshold(), rules.half_size_bound()} : Separation{};
 }
 
 }  // namespace mk

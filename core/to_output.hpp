@@ -157,10 +157,6 @@ inline std::vector<Point> without_repeats(const std::vector<Point>& ring) {
 
 }  // namespace detail
 
-// Up to this many crossings on its cycles, a result's rounding is certified exactly near them
-// (rounding_motion.hpp); beyond, from the boxes first (rounding_boxes.hpp).
-inline constexpr std::size_t kFewCrossingsForExactCertificate = 256;
-
 // Whether rounding should make the boxes' half-sizes as it goes: when the result has more
 // crossings than the exact certificate takes, the box certificate may be asked for them.
 template <Kernel K>
@@ -182,6 +178,10 @@ bool is_valid_rounded_result_ogc(const BooleanResult<K>& r, const std::vector<st
     if (r.cycles[c].vertices.size() == 2 && rounded[c][0] == rounded[c][1]) return false;
   }
   if constexpr (K::is_exact) {
+    // When step 3 proved its rules, the input's rule is all that is left (separation_rules.hpp).
+    if constexpr (VertexBoxes<K>) {
+      if (halves && rounding_rules_keep_topology(r, *halves, threads)) return true;
+    }
     // Few crossings: the exact certificate looks near them only; many: the boxes' grid.
     constexpr std::size_t few = kFewCrossingsForExactCertificate;
     std::size_t crossings = static_cast<std::size_t>(r.arrangement.num_crossings());  // those on cycles, at most

@@ -26,66 +26,13 @@
 namespace mk {
 namespace {
 
+using test::ends_meet_exactly;
+using test::meets_exactly;
 using test::random_triangle;
 using test::round_result;
+using test::test_seed;
 
 using detail::RoundedVertexBox;
-
-std::uint64_t test_seed(std::uint64_t fallback) {
-  const char* env = std::getenv("MK_TEST_SEED");
-  const std::uint64_t seed = env ? std::strtoull(env, nullptr, 10) : fallback;
-  std::printf("seed %llu (set MK_TEST_SEED to change)\n", static_cast<unsigned long long>(seed));
-  return seed;
-}
-
-// Exactly: whether v's box meets the convex hull of a's and b's boxes (the region the edge
-// sweeps while its ends move within their boxes). By separating axes: two convex regions
-// are apart when some normal of an edge of either separates them, here x, y and the
-// normals of the hull's edges.
-bool meets_exactly(const RoundedVertexBox& v, const RoundedVertexBox& a, const RoundedVertexBox& b) {
-  struct Q {
-    mpq_class x, y;
-  };
-  const auto corners = [](const RoundedVertexBox& c) {
-    const mpq_class x(c.at.x), y(c.at.y), rx(c.rx), ry(c.ry);
-    return std::vector<Q>{{x - rx, y - ry}, {x + rx, y - ry}, {x + rx, y + ry}, {x - rx, y + ry}};
-  };
-  std::vector<Q> pts = corners(a);
-  for (const Q& q : corners(b)) pts.push_back(q);
-  const std::vector<Q> box = corners(v);
-  // The hull, counterclockwise (Andrew's monotone chain, exact).
-  std::sort(pts.begin(), pts.end(), [](const Q& p, const Q& q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
-  const auto cross = [](const Q& o, const Q& p, const Q& q) -> mpq_class { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
-  std::vector<Q> hull;
-  for (int pass = 0; pass < 2; ++pass) {
-    const std::size_t floor = hull.size();
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      const Q& p = pass == 0 ? pts[i] : pts[pts.size() - 1 - i];
-      while (hull.size() >= floor + 2 && sgn(cross(hull[hull.size() - 2], hull.back(), p)) <= 0) hull.pop_back();
-      hull.push_back(p);
-    }
-    hull.pop_back();
-  }
-  // Along x and y.
-  mpq_class hx0 = hull[0].x, hx1 = hull[0].x, hy0 = hull[0].y, hy1 = hull[0].y;
-  for (const Q& h : hull) hx0 = std::min(hx0, h.x), hx1 = std::max(hx1, h.x), hy0 = std::min(hy0, h.y), hy1 = std::max(hy1, h.y);
-  if (box[2].x < hx0 || box[0].x > hx1 || box[2].y < hy0 || box[0].y > hy1) return false;
-  // Along each hull edge's outward normal: the box wholly beyond the edge's line.
-  for (std::size_t i = 0; i < hull.size(); ++i) {
-    const Q& p = hull[i];
-    const Q& q = hull[(i + 1) % hull.size()];
-    if (p.x == q.x && p.y == q.y) continue;
-    bool beyond = true;
-    for (const Q& c : box) beyond = beyond && sgn(cross(p, q, c)) < 0;
-    if (beyond) return false;
-  }
-  return true;
-}
-
-bool ends_meet_exactly(const RoundedVertexBox& a, const RoundedVertexBox& b) {
-  const mpq_class tx = mpq_class(a.rx) + mpq_class(b.rx), ty = mpq_class(a.ry) + mpq_class(b.ry);
-  return abs(mpq_class(a.at.x) - mpq_class(b.at.x)) <= tx && abs(mpq_class(a.at.y) - mpq_class(b.at.y)) <= ty;
-}
 
 TEST(RoundingBoxes, NextUpIsNextafter) {
   const double values[] = {0.0, -0.0, 1.0, -1.0, 0x1p-1074, -0x1p-1074, 0x1p-1022, DBL_MAX, -DBL_MAX, 3.7e-310, -2.5, HUGE_VAL, -HUGE_VAL};
@@ -144,18 +91,10 @@ TEST(RoundingBoxes, SeparationIsNeverClaimedForBoxesThatMeet) {
   EXPECT_GT(far_cleared, far * 9 / 10);  // the margins cost nothing visible at 1e-9
 }
 
-// A star-shaped ring of n vertices at random angles and radii about c (bench's star).
+// A star-shaped polygon of n vertices about c.
 Polygon random_star(std::mt19937_64& rng, int n, Point c) {
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<double> angles(static_cast<std::size_t>(n));
-  for (auto& a : angles) a = 2 * std::numbers::pi * u(rng);
-  std::sort(angles.begin(), angles.end());
   Polygon p;
-  p.rings.emplace_back();
-  for (const double a : angles) {
-    const double radius = 50 + 50 * u(rng);
-    p.rings.back().push_back({c.x + radius * std::cos(a), c.y + radius * std::sin(a)});
-  }
+  p.rings.push_back(test::star_ring(rng, n, c));
   return p;
 }
 
