@@ -17,20 +17,25 @@
 //      beyond the next one is at least as far (this also makes every result edge long).
 //  (C) s and u meet at one point w, not collinear: the distance from s's points to segment u
 //      is convex along s and zero at w, so it is smallest at w's neighbours on s: each
-//      neighbour more than T from u (tested against u's line, which is nearer). At a crossing, u is the crossing's other edge; at an
-//      input point, the ring's edge before or after (only points on exactly two edges, of
-//      one ring, are taken; any other input point refuses).
+//      neighbour more than T from u. It is tested against u's line (nearer than the
+//      segment), from the neighbour's distance d from w along s: the line is at least
+//      d |du x ds| / (|du|_1 |ds|_inf) away. At a crossing, u is the crossing's other edge;
+//      at an input point, the ring's edge before or after (only points on exactly two
+//      edges, of one ring, are taken; any other input point refuses). Where the ring goes
+//      straight on through an input point, the two edges are one line and N covers them.
 //  (I) s and u disjoint: the distance of two disjoint segments is reached at an end of one
 //      of them (in any norm), so every input point more than T from every input edge it
 //      does not end. This involves the input alone and is decided when the output is
-//      written (rounding_rules_keep_topology in rounding_boxes.hpp), by the box certificate's grid over the input
-//      points with boxes of half-size T/2.
+//      written (rounding_rules_keep_topology in rounding_boxes.hpp), by the box
+//      certificate's grid over the input points with boxes of half-size T/2.
 // N and C are tested in step 3's fragment loop (step3_intersections.hpp), where each edge's
-// vertices are at hand in order, sorted a moment before: two or three tests per fragment
-// on data in cache. Every test is proved with margins for its own rounding (the box
-// certificate's tests, on boxes grown by T). Refusing is always safe: any input point
-// inside an edge, on more than two edges, or on a ring of two points, any crossing whose
-// edges are not found, or any test not proved, and the box certificate decides instead.
+// vertices are at hand in order, sorted a moment before: per fragment one gap between two
+// boxes, one slope (the far end's) and two comparisons, on data in cache. Each bound is
+// proved with margins for its own rounding. Refusing is always safe: any input point inside
+// an edge, on more than two edges, or on a ring of two points, any crossing whose edges are
+// not found, or any test not proved, and the box certificate decides instead. N is implied
+// by C (w lies on u, so a neighbour within T of w is within T of u's line); it is kept as
+// the first, cheapest test.
 // [HP02] (vertices apart from edges they are not on) [GM98] [MK89 §3.1 step 3]
 // Preconditions: the exact result is valid (to_output.hpp); the kernel's crossings keep
 // their two segments and a box holding their exact point (CrossingSegments).
@@ -69,23 +74,47 @@ concept CrossingSegments = VertexBoxes<K> && std::same_as<typename K::Point, Poi
 
 namespace detail {
 
-// Whether boxes p and q ({x0, y0, x1, y1}) are more than t apart along x or y: the largest
-// gap, computed and then taken one double down (no more than the exact gap), above t.
-inline bool boxes_apart_by(const std::array<double, 4>& p, const std::array<double, 4>& q, double t) {
-  return next_down(std::max({q[0] - p[2], p[0] - q[2], q[1] - p[3], p[1] - q[3]})) > t;
+// A lower bound on the gap between boxes p and q ({x0, y0, x1, y1}) along x or y: the
+// largest of the four, computed and then taken one double down (no more than the exact gap;
+// negative when the boxes meet).
+inline double box_gap(const std::array<double, 4>& p, const std::array<double, 4>& q) {
+  return next_down(std::max({q[0] - p[2], p[0] - q[2], q[1] - p[3], p[1] - q[3]}));
 }
 
-// Whether every point of box b lies more than t (max norm) from the line through u0 and u1,
-// so from the segment: the box grown by t clear along the line's normal (the box
-// certificate's test, the segment a hull of two points). Beyond the segment's ends the line
-// is nearer than the segment, so this may refuse what the segment's distance would allow;
-// never the other way. A box too wide for doubles is never cleared (NaN and infinity
-// compare false).
-inline bool box_far_from_line(const std::array<double, 4>& b, double t, const Point& u0, const Point& u1) {
-  const Point c{b[0] + (b[2] - b[0]) / 2, b[1] + (b[3] - b[1]) / 2};
-  const double hx = rounded_up(rounded_up(std::max(c.x - b[0], b[2] - c.x)) + t);
-  const double hy = rounded_up(rounded_up(std::max(c.y - b[1], b[3] - c.y)) + t);
-  return clear_along_normal({c, hx, hy}, {u0, 0, 0}, {u1, 0, 0});
+// How far points of a segment s through a vertex w get from another line u through w: a
+// point of s at distance d from w (max norm) is at distance at least d |du x ds| /
+// (|du|_1 |ds|_inf) from u's line (the max-norm distance to a line is |du x (p - w)| /
+// |du|_1). `lo` bounds the factor's numerator from below and `hi` its denominator from
+// above, each proved: the cross product of the rounded differences is within 4.01 eps
+// (|p1| + |p2|) of the exact one (two differences, two products, one subtraction) and 8 eps
+// is subtracted; the norms are rounded up by the factor 1 + 8 eps. Products too small for
+// these relative bounds (under 2^-900) give no bound (lo 0).
+struct Slope {
+  double lo = 0, hi = 1;
+};
+inline Slope slope_between(const Point& u0, const Point& u1, double dsx, double dsy, double ds_inf_hi) {
+  const double dux = u1.x - u0.x, duy = u1.y - u0.y;
+  const double p1 = dux * dsy, p2 = duy * dsx;
+  const double size = std::abs(p1) + std::abs(p2);
+  if (!(size >= 0x1p-900)) return {};
+  const double lo = next_down(std::abs(p1 - p2) - size * 0x1p-50);
+  return {lo, (std::abs(dux) + std::abs(duy)) * (1 + 0x1p-50) * ds_inf_hi};
+}
+
+// Whether a point of s at distance at least `gap` from w (max norm) is more than t from u's
+// line, given the slope between s and u: gap lo / hi > t, each side's rounding covered by a
+// factor 1 -+ 8 eps. Subnormal and NaN values fail.
+inline bool far_from_line(const Slope& slope, double gap, double t) {
+  const double rhs = t * slope.hi * (1 + 0x1p-50);
+  return rhs >= 0x1p-900 && slope.lo * gap * (1 - 0x1p-50) > rhs;
+}
+
+// Whether q lies strictly between p and r on one line (decided exactly).
+template <Kernel K>
+bool straight_corner(const Point& p, const Point& q, const Point& r) {
+  if (K::orient2d(K::point(p), K::point(q), K::point(r)) != Sign::zero) return false;
+  const auto between = [](double a, double b, double c) { return (a < b && b < c) || (a > b && b > c); };
+  return between(p.x, q.x, r.x) || (p.x == q.x && q.x == r.x && between(p.y, q.y, r.y));
 }
 
 inline bool same_segment(const Point& s0, const Point& s1, const Point& a, const Point& b) {
@@ -168,26 +197,42 @@ class SeparationRules {
         }
         return K::vertex_box(arr.crossings[static_cast<std::size_t>(id - np)]);
       };
-      // Rule C at vertex w of this edge, for n (w's neighbour along it): n's box far from
-      // the other edge through w.
-      const auto far_from_other = [&](int w, const std::array<double, 4>& n, const Edge& ring_edge) {
-        if (w < np) return detail::box_far_from_line(n, t_, point(ring_edge.src), point(ring_edge.dst));
+      // Rule C at vertex w of this edge: the slope between this edge and the other edge
+      // through w (the ring's edge `ring_edge` at an input point, else the crossing's other
+      // segment); lo 0 (no bound) when the crossing's segments are not found.
+      const double dsx = s1.x - s0.x, dsy = s1.y - s0.y;
+      const double ds_inf_hi = std::max(std::abs(dsx), std::abs(dsy)) * (1 + 0x1p-50);
+      const auto slope_at = [&](int w, const Edge& ring_edge) {
+        if (w < np) {
+          const Point& u0 = point(ring_edge.src);
+          const Point& u1 = point(ring_edge.dst);
+          // A straight corner (the ring goes on along the same line): the neighbour lies on
+          // that line beyond w, as far from the ring's other edge as from w (rule N).
+          if (detail::straight_corner<K>(w == edge.src ? u0 : u1, point(w), w == edge.src ? s1 : s0)) {
+            return detail::Slope{HUGE_VAL, 1};
+          }
+          return detail::slope_between(u0, u1, dsx, dsy, ds_inf_hi);
+        }
         const auto& v = arr.crossings[static_cast<std::size_t>(w - np)];
-        if (detail::same_segment(s0, s1, v.a0, v.a1)) return detail::box_far_from_line(n, t_, v.b0, v.b1);
-        if (detail::same_segment(s0, s1, v.b0, v.b1)) return detail::box_far_from_line(n, t_, v.a0, v.a1);
-        return false;
+        if (detail::same_segment(s0, s1, v.a0, v.a1)) return detail::slope_between(v.b0, v.b1, dsx, dsy, ds_inf_hi);
+        if (detail::same_segment(s0, s1, v.b0, v.b1)) return detail::slope_between(v.a0, v.a1, dsx, dsy, ds_inf_hi);
+        return detail::Slope{};
       };
       int from = edge.src;
       std::array<double, 4> from_box = box(from);
+      detail::Slope from_slope = slope_at(from, before);
       for (std::size_t k = 0; k <= inside.size(); ++k) {
         const bool last = k == inside.size();
         const int to = last ? edge.dst : inside[k];
         if (!last && to < np) return false;  // an input point inside the edge
         const std::array<double, 4> to_box = box(to);
-        if (!detail::boxes_apart_by(from_box, to_box, t_)) return false;  // N
-        if (!far_from_other(from, to_box, before) || !far_from_other(to, from_box, after)) return false;  // C
+        const detail::Slope to_slope = slope_at(to, after);
+        const double gap = detail::box_gap(from_box, to_box);  // at most the exact points' distance
+        if (!(gap > t_)) return false;  // N
+        if (!detail::far_from_line(from_slope, gap, t_) || !detail::far_from_line(to_slope, gap, t_)) return false;  // C
         from = to;
         from_box = to_box;
+        from_slope = to_slope;
       }
       return true;
     }
