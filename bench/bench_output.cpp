@@ -17,7 +17,14 @@
 //   certify_ratio certify_s / op_s
 //   rounding_s    rounding every vertex to its nearest double (part of output_s, again)
 //   validity_s    the exact validity check of the rounded result (part of output_s, again)
-//   rounding_ratio (rounding_s + validity_s + certify_s) / op_s: issue 12's bar is 0.10
+//   rounding_ratio (rounding_s + validity_s + certify_s) / op_s
+//   rules_s       what step 3 spends on the rounding certificate's rules N and C
+//                 (separation_rules.hpp): step 3 timed with them and without
+//                 (Options::rounding_rules), three times each per iteration, the difference
+//                 of the medians (about 0 where the rules do not run; noise can make it < 0)
+//   rounding_all_ratio (rounding_s + validity_s + certify_s + rules_s) / (op_s - rules_s):
+//                 all that certified rounding costs, over the operation without it; issue
+//                 12's bar is 0.10 (rules_s taken as 0 when negative)
 //   area_s        the area rounded to the nearest double (filtered sum)
 //   area_exact_s  the exact area and its decimal text ("p/q")
 //   write_ratio   (output_s + wkt_s) / op_s: the bar is 0.25
@@ -35,6 +42,8 @@
 #include <benchmark/benchmark.h>
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -64,14 +73,39 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
   Options opt;
   opt.op = Operation::intersection;
   double op = 0, output = 0, certify = 0, wkt = 0, wkt_cpu = 0, area = 0, area_exact = 0, rounding = 0, validity = 0;
-  double area_gcd = 0, area_text = 0, to_chars_cpu = 0;
+  double area_gcd = 0, area_text = 0, to_chars_cpu = 0, rules = 0;
   bool snapped = false;
+  // Step 3 alone, from the trace hook's calls after steps 2 and 3.
+  Clock::time_point step3_start;
+  double step3 = 0;
+  const TraceHook<ExactKernel> time_step3 = [&](Step s, const Arrangement<ExactKernel>&) {
+    if (s == Step::vertex_rings) step3_start = Clock::now();
+    if (s == Step::intersections) step3 = seconds_since(step3_start);
+  };
+  const auto median_of_3 = [](std::array<double, 3> v) {
+    std::sort(v.begin(), v.end());
+    return v[1];
+  };
   std::size_t digits = 0;
   for (auto _ : state) {
     const double waited_before = op + output + wkt;
     auto t = Clock::now();
-    const BooleanResult<ExactKernel> r = boolean_op<ExactKernel>(w.a, w.b, opt);
+    const BooleanResult<ExactKernel> r = boolean_op<ExactKernel>(w.a, w.b, opt, time_step3);
     op += seconds_since(t);
+    // Step 3 with the rules (this run's and two more) and without (three), alternately.
+    {
+      std::array<double, 3> with{step3, 0, 0}, without{};
+      Options plain = opt;
+      plain.rounding_rules = false;
+      for (std::size_t k = 0; k < 3; ++k) {
+        benchmark::DoNotOptimize(boolean_op<ExactKernel>(w.a, w.b, plain, time_step3).cycles.size());
+        without[k] = step3;
+        if (k == 2) break;
+        benchmark::DoNotOptimize(boolean_op<ExactKernel>(w.a, w.b, opt, time_step3).cycles.size());
+        with[k + 1] = step3;
+      }
+      rules += median_of_3(with) - median_of_3(without);
+    }
     t = Clock::now();
     Output out = to_output<ExactKernel, ExactKernel>(r, false, resolve_threads(opt.threads));
     output += seconds_since(t);
@@ -155,6 +189,9 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
   // Issue 12's bar (at most 0.10 when the nearest doubles are valid): rounding to nearest,
   // the validity check that certifies it, and certify_rounding's own step, over the operation.
   state.counters["rounding_ratio"] = (rounding + validity + certify) / op;
+  state.counters["rules_s"] = rules / n;
+  const double rules_cost = std::max(rules, 0.0);
+  state.counters["rounding_all_ratio"] = (rounding + validity + certify + rules_cost) / (op - rules_cost);
   state.counters["snapped"] = snapped ? 1 : 0;
   state.counters["area_s"] = area / n;
   state.counters["area_exact_s"] = area_exact / n;

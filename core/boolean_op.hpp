@@ -35,6 +35,10 @@ struct Options {
   // Threads for the phases that run in parallel; 0: every core. The result is the same,
   // bit for bit, on any number of threads.
   unsigned threads = 0;
+  // Step 3 proves the rules of the rounding certificate where they apply
+  // (separation_rules.hpp); off, the output's grid of boxes decides alone. The result is
+  // the same either way; off is for experiments and for measuring what the rules cost.
+  bool rounding_rules = true;
 };
 
 struct Stats {
@@ -88,7 +92,7 @@ BooleanResult<K> run_boolean_op(const BasicPolygon<typename K::Point>& a, const 
   hook(Step::oriented, arr);
   build_vertex_rings(arr, threads);  // step 2
   hook(Step::vertex_rings, arr);
-  insert_intersections(arr, opt.pair_search, threads);  // step 3
+  insert_intersections(arr, opt.pair_search, threads, opt.rounding_rules);  // step 3
   hook(Step::intersections, arr);
   Incidence inc = classify_fragments(arr, threads);  // step 4
   hook(Step::classified, arr);

@@ -90,25 +90,39 @@ inline bool bounds_apart(const BoxBounds& p, const BoxBounds& q) {
   return (p.x1 < q.x0) | (q.x1 < p.x0) | (p.y1 < q.y0) | (q.y1 < p.y0);
 }
 
+// The test along the normal of segment uw, made once for the segment and a widening
+// (tx, ty): whether a point is farther from the segment's line than the widening reaches.
+// |(w - u) x (p - u)| above the reach |dx| ty + |dy| tx: the determinant's error is at
+// most (3 + 16 eps) eps (|l| + |r|) [Sh97]; 2^-50 covers it and the rounding of this bound,
+// 1 + 2^-48 the rounding of the reach. Products that underflow lose at most 2^-1075 each:
+// the last term covers them.
+class NormalClearance {
+ public:
+  NormalClearance(const Point& u, const Point& w, double tx, double ty)
+      : u_(u), dx_(w.x - u.x), dy_(w.y - u.y), reach_((std::abs(dx_) * ty + std::abs(dy_) * tx) * (1 + 0x1p-48)) {}
+  bool clear(const Point& p) const {
+    const double l = dx_ * (p.y - u_.y);
+    const double r = dy_ * (p.x - u_.x);
+    return std::abs(l - r) > reach_ + (std::abs(l) + std::abs(r)) * 0x1p-50 + 0x1p-1000;
+  }
+
+ private:
+  Point u_;
+  double dx_, dy_, reach_;
+};
+
+// The widening for a vertex box of half-sizes (rx, ry) against the hull of boxes of at
+// most (hx, hy): the hull lies in the segment widened by the larger box of its ends, and
+// the boxes meet when the vertex's point lies in it widened by both.
+inline std::array<double, 2> normal_widening(double rx, double ry, double hx, double hy) {
+  return {std::max(rounded_up(rx + hx), DBL_MIN), std::max(rounded_up(ry + hy), DBL_MIN)};
+}
+
 // Whether vertex box v is clear of the convex hull of the boxes of a and b, along the
 // normal of segment ab (clear_of_edge's second test).
 inline bool clear_along_normal(const RoundedVertexBox& v, const RoundedVertexBox& a, const RoundedVertexBox& b) {
-  // Half-sizes of v's box plus the hull's: the hull lies in segment ab widened by the larger
-  // box of its ends, and the boxes meet when v's point lies in ab widened by both.
-  const double tx = std::max(rounded_up(v.rx + std::max(a.rx, b.rx)), DBL_MIN);
-  const double ty = std::max(rounded_up(v.ry + std::max(a.ry, b.ry)), DBL_MIN);
-  const Point& p = v.at;
-  const Point& u = a.at;
-  const Point& w = b.at;
-  // Along the normal: |(w - u) x (p - u)| above the widening's reach |dx| ty + |dy| tx. The
-  // determinant's error is at most (3 + 16 eps) eps (|l| + |r|) [Sh97]; 2^-50 covers it and
-  // the rounding of this bound, 1 + 2^-48 the rounding of the reach. Products that
-  // underflow lose at most 2^-1075 each: the last term covers them.
-  const double dx = w.x - u.x, dy = w.y - u.y;
-  const double l = dx * (p.y - u.y);
-  const double r = dy * (p.x - u.x);
-  const double reach = std::abs(dx) * ty + std::abs(dy) * tx;
-  return std::abs(l - r) > reach * (1 + 0x1p-48) + (std::abs(l) + std::abs(r)) * 0x1p-50 + 0x1p-1000;
+  const auto [tx, ty] = normal_widening(v.rx, v.ry, std::max(a.rx, b.rx), std::max(a.ry, b.ry));
+  return NormalClearance(a.at, b.at, tx, ty).clear(v.at);
 }
 
 // Whether vertex box v is clear of the convex hull of the boxes of a and b: apart along x
@@ -161,16 +175,31 @@ class BoxGrid {
     if (!(h > 0 && std::isfinite(h))) ny_ = 1;
     ix_ = nx_ > 1 ? nx_ / w : 0;
     iy_ = ny_ > 1 ? ny_ / h : 0;
+    height_ = ny_ > 1 ? 1 / iy_ : 0;
   }
   int col(double x) const { return clamped_cell((x - x0_) * ix_, nx_); }
   int row(double y) const { return clamped_cell((y - y0_) * iy_, ny_); }
   int cells() const { return nx_ * ny_; }
   int rows() const { return ny_; }
   int cell(int c, int r) const { return r * nx_ + c; }
+  // A range of y holding every y that row() puts in row r: the row's exact band widened by a
+  // hundredth of a row and by 2^-48 of the magnitudes, which cover the rounding of row()'s
+  // subtraction and product (relative 2^-52 each, at most 2^20 rows) and of this sum; the
+  // first and last rows (which take everything beyond the grid) and a single row reach to
+  // infinity.
+  std::array<double, 2> row_band(int r) const {
+    if (ny_ == 1) return {-HUGE_VAL, HUGE_VAL};
+    const double lo = (r - 0.01) * height_, hi = (r + 1.01) * height_;
+    const double slack = 0x1p-48 * (std::abs(y0_) + std::abs(hi));
+    return {r == 0 ? -HUGE_VAL : y0_ + lo - slack, r == ny_ - 1 ? HUGE_VAL : y0_ + hi + slack};
+  }
+  // The height of a row (at least): 0 for a single row.
+  double row_height() const { return height_; }
 
  private:
   double x0_ = HUGE_VAL, y0_ = HUGE_VAL;
   double ix_ = 0, iy_ = 0;
+  double height_ = 0;  // 1 / iy_, rounded: a row's height within a relative 2^-52
   int nx_ = 1, ny_ = 1;
 };
 
@@ -488,6 +517,109 @@ inline bool boxes_keep_topology(const std::vector<RoundedVertexBox>& v, const st
         refused = true;
         return;
       }
+    }
+  });
+  return !refused;
+}
+
+// boxes_keep_topology for points that did not move, each with a box of half-size `half`
+// about it, against edges between them (rule I of separation_rules.hpp): true when no
+// point's box meets the hull of an edge it does not end. The points are listed in the grid's
+// cells their boxes meet; each edge visits, row by row, the cells its hull may meet in that
+// row (the segment's x over the row's band, widened by the half-size and by its rounding):
+// about as many cells as the segment crosses, where the pieces of boxes_keep_topology,
+// made for boxes of every size, visit about twice as many and cost more each. False also
+// when the work passes a budget linear in the input (points crowding cells that many edges
+// cross), which leaves the decision to the general certificate.
+inline bool points_clear_of_edges(const std::vector<Point>& points, double half, const std::vector<std::array<int, 2>>& edges,
+                                  unsigned threads = 1) {
+  if (!(half >= 0 && half < HUGE_VAL)) return false;
+  std::vector<RoundedVertexBox> v(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) v[k] = {points[k], half, half};
+  const BoxGrid grid(v, v.size());
+  const std::size_t cells = static_cast<std::size_t>(grid.cells());
+  const std::size_t budget = 64 * (v.size() + edges.size()) + (1u << 20);
+  // The points listed by cell (counted, then placed), each with its index.
+  std::vector<int> start(cells + 1, 0);
+  std::vector<std::array<int, 4>> spans(v.size());
+  std::size_t entries = 0;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const BoxBounds b = vertex_bounds(v[k]);
+    const auto& sp = spans[k] = {grid.col(b.x0), grid.col(b.x1), grid.row(b.y0), grid.row(b.y1)};
+    entries += static_cast<std::size_t>(sp[1] - sp[0] + 1) * static_cast<std::size_t>(sp[3] - sp[2] + 1);
+    if (entries > budget) return false;
+    for (int r = sp[2]; r <= sp[3]; ++r) {
+      for (int c = sp[0]; c <= sp[1]; ++c) ++start[static_cast<std::size_t>(grid.cell(c, r)) + 1];
+    }
+  }
+  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  // Each entry's point beside its index: an edge reads its cells' points in a run.
+  std::vector<int> in_cell(entries);
+  std::vector<Point> in_cell_at(entries);
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const auto& sp = spans[k];
+      for (int r = sp[2]; r <= sp[3]; ++r) {
+        for (int c = sp[0]; c <= sp[1]; ++c) {
+          const auto at = static_cast<std::size_t>(fill[static_cast<std::size_t>(grid.cell(c, r))]++);
+          in_cell[at] = static_cast<int>(k);
+          in_cell_at[at] = points[k];
+        }
+      }
+    }
+  }
+  const auto [tx, ty] = normal_widening(half, half, half, half);
+  const unsigned t = threads_for(edges.size(), threads);
+  const std::size_t parts = t > 1 ? 8 * static_cast<std::size_t>(t) : 1;
+  const std::size_t part_budget = budget / parts;
+  std::atomic<bool> refused{false};
+  run_tasks(t, parts, [&](std::size_t part) {
+    std::size_t work = 0;
+    for (std::size_t i = edges.size() * part / parts, last = edges.size() * (part + 1) / parts;
+         i < last && !refused.load(std::memory_order_relaxed); ++i) {
+      const auto [ia, ib] = edges[i];
+      const RoundedVertexBox& a = v[static_cast<std::size_t>(ia)];
+      const RoundedVertexBox& b = v[static_cast<std::size_t>(ib)];
+      const BoxBounds hull = hull_bounds(vertex_bounds(a), vertex_bounds(b));
+      const Point u = a.at, w = b.at;
+      const NormalClearance normal(u, w, tx, ty);
+      const double dx = w.x - u.x, dy = w.y - u.y;
+      // Row by row: a point q of the hull in row r has q.y in the row's band, so lies within
+      // the half-size of a point s of the segment with s.y in the band widened by it; s.x is
+      // x(s.y) on the segment's line, computed with an error under 2^-48 (|u.x| + 2 |dx|)
+      // when the segment spans a row or more (|y - u.y| at most |dy| and a row then), else
+      // the hull's x range is taken whole.
+      const bool steep = std::abs(dy) >= grid.row_height() && dy != 0;
+      const double slope = steep ? dx / dy : 0;
+      const double widen = rounded_up(rounded_up(half + rounded_up(0x1p-48 * (std::abs(u.x) + 2 * std::abs(dx)))) + DBL_MIN);
+      const double y_lo = std::min(u.y, w.y), y_hi = std::max(u.y, w.y);
+      bool ok = true;
+      for (int r = grid.row(hull.y0), r1 = grid.row(hull.y1); r <= r1 && ok; ++r) {
+        double x0 = hull.x0, x1 = hull.x1;
+        if (steep) {
+          // The band widened by the half-size, each end rounded outward, and cut to the
+          // segment's y: empty, no point of the hull in this row.
+          const auto band = grid.row_band(r);
+          const double s0 = std::max(below(band[0] - half), y_lo), s1 = std::min(above(band[1] + half), y_hi);
+          if (s0 > s1) continue;
+          const double xa = u.x + (s0 - u.y) * slope, xb = u.x + (s1 - u.y) * slope;
+          x0 = std::max(x0, below(std::min(xa, xb) - widen));
+          x1 = std::min(x1, above(std::max(xa, xb) + widen));
+          if (x0 > x1) continue;
+        }
+        const int from = start[static_cast<std::size_t>(grid.cell(grid.col(x0), r))];
+        const int to = start[static_cast<std::size_t>(grid.cell(grid.col(x1), r)) + 1];
+        work += static_cast<std::size_t>(to - from) + 1;
+        // Almost every point is clear along the normal; the rest by their bounds, or the
+        // edge's own ends.
+        for (int j = from; j < to; ++j) {
+          if (normal.clear(in_cell_at[static_cast<std::size_t>(j)])) continue;
+          const int k = in_cell[static_cast<std::size_t>(j)];
+          if (k != ia && k != ib && !bounds_apart(vertex_bounds(v[static_cast<std::size_t>(k)]), hull)) ok = false;
+        }
+      }
+      if (!ok || work > part_budget) refused = true;
     }
   });
   return !refused;

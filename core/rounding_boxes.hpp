@@ -91,30 +91,29 @@ bool rounding_boxes_keep_topology(const BooleanResult<K>& r, const std::vector<s
 }
 
 // Rule I, and the rest of the certificate: true when step 3 proved rules N and C
-// (arr.separation) for every vertex's half-sizes (`halves`, as rounded_cycles makes them),
-// and every input point is more than T from every input edge it does not end. False means
-// "not certified", never "invalid".
+// (arr.separation) and every input point is more than T from every input edge it does not
+// end. False means "not certified", never "invalid". The vertices' boxes need not be made:
+// a crossing's box has double bounds holding its exact point, so the nearest double lies in
+// it too, and the box about that double (half-sizes the larger distance to the bounds,
+// rounded up, as rounding_half_sizes makes them) is within its extent, so within R, by
+// the monotony of rounding (separation_rules_test checks it exactly).
 template <Kernel K>
-bool rounding_rules_keep_topology(const BooleanResult<K>& r, const RoundingHalves& halves, unsigned threads = 1) {
+bool rounding_rules_keep_topology(const BooleanResult<K>& r, unsigned threads = 1) {
   const Arrangement<K>& arr = r.arrangement;
-  const double big_t = arr.separation.threshold, big_r = arr.separation.half_size_bound;
-  if (!(big_t > 0) || halves.empty()) return false;
-  for (const auto& h : halves.sizes) {
-    if (!(h[0] <= big_r && h[1] <= big_r)) return false;
-  }
+  const double big_t = arr.separation.threshold;
+  if constexpr (!std::is_same_v<typename K::Point, Point>) return false;  // never proved (CrossingSegments)
+  if (!(big_t > 0)) return false;
   // Every point's box of half-size T/2 clear of the hull of every edge it does not end (the
   // hull within T/2 of the segment): then the point is more than T from the edge.
   const double half = detail::rounded_up(big_t / 2 * (1 + 0x1p-52));
-  std::vector<detail::RoundedVertexBox> points;
-  points.reserve(arr.points.size());
-  for (const auto& p : arr.points) points.push_back({p, half, half});
   std::vector<std::array<int, 2>> edges;
   for (const PreparedPolygon& poly : arr.polygon) {
     for (const auto& cycle : poly.cycles) {
       for (std::size_t k = 0; k < cycle.size(); ++k) edges.push_back({cycle[k], cycle[(k + 1) % cycle.size()]});
     }
   }
-  return detail::boxes_keep_topology(points, edges, false, threads);
+  if constexpr (std::is_same_v<typename K::Point, Point>) return detail::points_clear_of_edges(arr.points, half, edges, threads);
+  return false;
 }
 
 }  // namespace mk

@@ -26,8 +26,9 @@
 //  (I) s and u disjoint: the distance of two disjoint segments is reached at an end of one
 //      of them (in any norm), so every input point more than T from every input edge it
 //      does not end. This involves the input alone and is decided when the output is
-//      written (rounding_rules_keep_topology in rounding_boxes.hpp), by the box
-//      certificate's grid over the input points with boxes of half-size T/2.
+//      written (rounding_rules_keep_topology in rounding_boxes.hpp), by a grid over the
+//      input points with boxes of half-size T/2 that each input edge walks row by row
+//      (points_clear_of_edges in box_certificate.hpp).
 // N and C are tested in step 3's fragment loop (step3_intersections.hpp), where each edge's
 // vertices are at hand in order, sorted a moment before: per fragment one gap between two
 // boxes, one slope (the far end's) and two comparisons, on data in cache. Each bound is
@@ -130,6 +131,7 @@ inline bool same_segment(const Point& s0, const Point& s1, const Point& a, const
 template <Kernel K>
 class SeparationRules {
  public:
+  SeparationRules() = default;  // inactive
   SeparationRules(const Arrangement<K>& arr, unsigned threads) {
     if constexpr (CrossingSegments<K>) {
       const std::size_t crossings = arr.crossings.size();
@@ -242,5 +244,38 @@ class SeparationRules {
   double r_ = 0, t_ = 0;
   std::vector<std::uint8_t> degree_;  // per input point
 };
+
+// Rules N and C over an arrangement whose fragments step 3 has made, in a pass of their own
+// (each edge's inner vertices read back from its fragments): what step 3 decides as it makes
+// them, decided again. For measuring what the rules cost (a pass apart reads the vertices
+// from memory, not from the cache the sort left them in: an upper bound on step 3's share)
+// and for checking step 3's verdict. True when the rules are active and hold on both polygons.
+template <Kernel K>
+bool separation_rules_hold(const Arrangement<K>& arr, unsigned threads = 1) {
+  const SeparationRules<K> rules(arr, threads);
+  if (!rules.active()) return false;
+  std::array<bool, 2> holds{true, true};
+  run_tasks(threads_for(arr.polygon[0].fragments.size() + arr.polygon[1].fragments.size(), threads), 2,
+            [&](std::size_t g) {
+              const PreparedPolygon& poly = arr.polygon[g];
+              std::vector<int> inside;
+              for (std::size_t c = 0; c + 1 < poly.cycle_first_fragment.size() && holds[g]; ++c) {
+                const int first = poly.cycle_first_edge[c], end = poly.cycle_first_edge[c + 1];
+                for (int f = poly.cycle_first_fragment[c], last = poly.cycle_first_fragment[c + 1]; f < last;) {
+                  const int e = poly.fragments[static_cast<std::size_t>(f)].edge;
+                  inside.clear();
+                  for (; f + 1 < last && poly.fragments[static_cast<std::size_t>(f + 1)].edge == e; ++f) {
+                    inside.push_back(poly.fragments[static_cast<std::size_t>(f)].to);
+                  }
+                  ++f;
+                  if (!rules.edge_holds(arr, static_cast<int>(g), e, first, end, inside)) {
+                    holds[g] = false;
+                    break;
+                  }
+                }
+              }
+            });
+  return holds[0] && holds[1];
+}
 
 }  // namespace mk

@@ -162,7 +162,8 @@ void take_early_intersections(Arrangement<K>& arr, std::array<EdgeInsertions, 2>
 }
 
 template <Kernel K>
-void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::sweep, unsigned threads = 1) {
+void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::sweep, unsigned threads = 1,
+                          bool rounding_rules = true) {
   auto& ea = arr.polygon[0].edges;
   auto& eb = arr.polygon[1].edges;
   std::array<EdgeInsertions, 2> inserted;  // per polygon, by edge index
@@ -248,7 +249,7 @@ void insert_intersections(Arrangement<K>& arr, PairSearch search = PairSearch::s
 
   // Rules N and C of the rounding certificate, tested on each edge's vertices as they are
   // put in order (separation_rules.hpp); each polygon stops testing at its first refusal.
-  const SeparationRules<K> rules(arr, threads);
+  const SeparationRules<K> rules = rounding_rules ? SeparationRules<K>(arr, threads) : SeparationRules<K>();
   std::array<bool, 2> separated{rules.active(), rules.active()};
   run_tasks(threads_for(ea.size() + eb.size(), threads), 2, [&](std::size_t g) {
     PreparedPolygon& poly = arr.polygon[g];

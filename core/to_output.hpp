@@ -158,10 +158,13 @@ inline std::vector<Point> without_repeats(const std::vector<Point>& ring) {
 }  // namespace detail
 
 // Whether rounding should make the boxes' half-sizes as it goes: when the result has more
-// crossings than the exact certificate takes, the box certificate may be asked for them.
+// crossings than the exact certificate takes, the box certificate may be asked for them;
+// not when step 3 proved its rules (the certificate from them needs no boxes; should it
+// refuse, the box certificate makes them itself).
 template <Kernel K>
 bool rounding_wants_halves(const BooleanResult<K>& r) {
-  return static_cast<std::size_t>(r.arrangement.num_crossings()) > kFewCrossingsForExactCertificate;
+  return static_cast<std::size_t>(r.arrangement.num_crossings()) > kFewCrossingsForExactCertificate &&
+         !(r.arrangement.separation.threshold > 0);
 }
 
 // Whether the result's polygons (each a list of cycle indices: shell, then holes), with
@@ -180,7 +183,7 @@ bool is_valid_rounded_result_ogc(const BooleanResult<K>& r, const std::vector<st
   if constexpr (K::is_exact) {
     // When step 3 proved its rules, the input's rule is all that is left (separation_rules.hpp).
     if constexpr (VertexBoxes<K>) {
-      if (halves && rounding_rules_keep_topology(r, *halves, threads)) return true;
+      if (rounding_rules_keep_topology(r, threads)) return true;
     }
     // Few crossings: the exact certificate looks near them only; many: the boxes' grid.
     constexpr std::size_t few = kFewCrossingsForExactCertificate;

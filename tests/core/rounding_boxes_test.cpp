@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -330,6 +331,84 @@ TEST(RoundingBoxes, LongShallowEdgesAgreeWithAllPairs) {
     ASSERT_EQ(grid, detail::boxes_keep_topology(boxes, edges, true)) << "trial " << trial;
     (grid ? certified : refused) += 1;
   }
+  EXPECT_GT(certified, 0);
+  EXPECT_GT(refused, 0);
+}
+
+// points_clear_of_edges (rule I of the rounding certificate): points of two stars, scaled
+// by 1, 2^-400 or 2^400 (products of differences stay normal), with boxes of one half-size
+// h, against the stars' edges, and extra points put at a few multiples of h from random
+// edges (along the normal from a point of the edge, or just beyond an end along its line:
+// boxes meet up to 2h); also points on one horizontal or vertical line (a grid of one row
+// or one column) with a path along them. Whenever it clears them, no point's box meets the
+// hull of an edge it does not end (exact rational arithmetic on every pair whose bounds are
+// not apart); whenever the general certificate over all pairs clears them, it does too;
+// and both outcomes occur. (Visiting every other row is caught here.)
+TEST(RoundingBoxes, PointsClearOfEdgesNeverClearsWhatMeets) {
+  std::mt19937_64 rng(test_seed(41));
+  std::uniform_real_distribution<double> u(0, 1);
+  int certified = 0, refused = 0;
+  long exact_pairs = 0;
+  for (int trial = 0; trial < 36; ++trial) {
+    const double scale = trial % 3 == 0 ? 1.0 : (trial % 3 == 1 ? 0x1p-400 : 0x1p400);
+    std::vector<Point> points;
+    std::vector<std::array<int, 2>> edges;
+    const auto add_ring = [&](const std::vector<Point>& ring) {
+      const int first = static_cast<int>(points.size());
+      for (const Point& p : ring) points.push_back({p.x * scale, p.y * scale});
+      const int n = static_cast<int>(ring.size());
+      for (int k = 0; k < n; ++k) edges.push_back({first + k, first + (k + 1) % n});
+    };
+    const int layout = trial % 4;
+    if (layout < 3) {
+      add_ring(test::star_ring(rng, 150, {0, 0}));
+      add_ring(test::star_ring(rng, 150, {30, 10}));
+    } else {  // one line: a path along it
+      const bool vertical = trial % 8 == 3;
+      const int first = static_cast<int>(points.size());
+      for (int k = 0; k < 200; ++k) {
+        const double t = (k + 0.5 * u(rng)) * scale;
+        points.push_back(vertical ? Point{7 * scale, t} : Point{t, -3 * scale});
+        if (k > 0) edges.push_back({first + k - 1, first + k});
+      }
+    }
+    const double h = std::ldexp(scale, -40 + static_cast<int>(rng() % 12));
+    const std::size_t planted = layout == 0 ? 0 : 1 + rng() % 2;
+    for (std::size_t i = 0; i < planted; ++i) {
+      const auto& [ia, ib] = edges[rng() % edges.size()];
+      const Point a = points[static_cast<std::size_t>(ia)], b = points[static_cast<std::size_t>(ib)];
+      const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+      const double d = h * std::array<double, 6>{0.3, 1.5, 2.5, 3, 10, 1000}[rng() % 6];
+      if (rng() % 4 == 0) {  // beyond b along the line
+        points.push_back({b.x + dx / len * d, b.y + dy / len * d});
+      } else {
+        const double t = u(rng);
+        points.push_back({a.x + t * dx - dy / len * d, a.y + t * dy + dx / len * d});
+      }
+    }
+    const bool cleared = detail::points_clear_of_edges(points, h, edges, 1 + trial % 2);
+    std::vector<RoundedVertexBox> boxes;
+    for (const Point& p : points) boxes.push_back({p, h, h});
+    if (detail::boxes_keep_topology(boxes, edges, true)) {
+      EXPECT_TRUE(cleared) << "trial " << trial;
+    }
+    if (cleared) {
+      for (const auto& [ia, ib] : edges) {
+        const auto& a = boxes[static_cast<std::size_t>(ia)];
+        const auto& b = boxes[static_cast<std::size_t>(ib)];
+        const detail::BoxBounds hull = detail::hull_bounds(detail::vertex_bounds(a), detail::vertex_bounds(b));
+        for (std::size_t k = 0; k < boxes.size(); ++k) {
+          if (static_cast<int>(k) == ia || static_cast<int>(k) == ib || detail::bounds_apart(detail::vertex_bounds(boxes[k]), hull)) {
+            continue;
+          }
+          ++exact_pairs;
+          ASSERT_FALSE(meets_exactly(boxes[k], a, b)) << "trial " << trial << ": point " << k << " meets edge " << ia << "-" << ib;
+        }
+      }
+    }
+    (cleared ? certified : refused) += 1;
+  }
+  std::printf("cleared %d, refused %d; %ld pairs checked exactly\n", certified, refused, exact_pairs);
   EXPECT_GT(certified, 0);
   EXPECT_GT(refused, 0);
 }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -58,12 +59,28 @@ std::vector<Point> with_points_near(std::mt19937_64& rng, std::vector<Point> a, 
   return a;
 }
 
-// What the certificate claims, checked exactly on result r rounded as given: every result
-// vertex's box apart from the hull of every result edge it does not end (candidates by
-// bounds, then rational arithmetic), every edge's end boxes apart, and the rounded polygons
-// valid by the full OGC check. Counts the pairs checked exactly.
+// Two stars of n points (about (0, 0) and (30, 10)), the first with `count` points put
+// ulps from the second's edges (with_points_near).
+std::array<Polygon, 2> stars_with_points_near(std::mt19937_64& rng, int n, int count) {
+  const Point ca{0, 0}, cb{30, 10};
+  const std::vector<Point> sb = star_ring(rng, n, cb);
+  std::array<Polygon, 2> ab;
+  ab[0].rings.push_back(with_points_near(rng, star_ring(rng, n, ca), ca, sb, count));
+  ab[1].rings.push_back(sb);
+  return ab;
+}
+
+// What the certificate claims, checked exactly on result r rounded as given: every vertex's
+// box within R (what the certificate takes from the construction, without making the
+// boxes), every result vertex's box apart from the hull of every result edge it does not
+// end (candidates by bounds, then rational arithmetic), every edge's end boxes apart, and
+// the rounded polygons valid by the full OGC check. Counts the pairs checked exactly.
 void expect_claim_holds(const BooleanResult<ExactKernel>& r, const std::vector<std::vector<Point>>& rounded,
                         const RoundingHalves& halves, long& pairs_checked) {
+  for (const auto& h : halves.sizes) {
+    ASSERT_LE(h[0], r.arrangement.separation.half_size_bound);
+    ASSERT_LE(h[1], r.arrangement.separation.half_size_bound);
+  }
   const auto polygon_cycles = result_polygon_cycles(r);
   std::vector<RoundedVertexBox> boxes;
   std::vector<std::array<int, 2>> edges;
@@ -95,12 +112,7 @@ TEST(SeparationRules, WhatTheyCertifyHoldsExactly) {
   int certified = 0, refused = 0, inactive = 0;
   long pairs_checked = 0;
   for (int i = 0; i < 48; ++i) {
-    const Point ca{0, 0}, cb{30, 10};
-    const std::vector<Point> sb = star_ring(rng, 500, cb);
-    const std::vector<Point> sa = with_points_near(rng, star_ring(rng, 500, ca), ca, sb, i % 4 == 0 ? 0 : 1 + i % 7);
-    Polygon a, b;
-    a.rings.push_back(sa);
-    b.rings.push_back(sb);
+    const auto [a, b] = stars_with_points_near(rng, 500, i % 4 == 0 ? 0 : 1 + i % 7);
     for (const Operation op : {Operation::intersection, Operation::union_, Operation::difference, Operation::symmetric_difference}) {
       Options opt;
       opt.op = op;
@@ -111,7 +123,7 @@ TEST(SeparationRules, WhatTheyCertifyHoldsExactly) {
       }
       RoundingHalves halves;
       const auto rounded = detail::rounded_cycles(r, 1, &halves);
-      if (!rounding_rules_keep_topology(r, halves)) {
+      if (!rounding_rules_keep_topology(r)) {
         ++refused;
         continue;
       }
@@ -169,7 +181,7 @@ TEST(SeparationRules, RefuseAShallowCrossingOfAThinSpike) {
     EXPECT_EQ(r.arrangement.separation.threshold, 0) << operation_name(op);
     RoundingHalves halves;
     const auto rounded = detail::rounded_cycles(r, 1, &halves);
-    if (rounding_rules_keep_topology(r, halves)) {
+    if (rounding_rules_keep_topology(r)) {
       ASSERT_NO_FATAL_FAILURE(expect_claim_holds(r, rounded, halves, pairs_checked)) << operation_name(op);
     }
   }
@@ -194,12 +206,44 @@ TEST(SeparationRules, CertifyLargeStarsOnAnyNumberOfThreads) {
       EXPECT_GT(r.arrangement.separation.threshold, 0) << operation_name(op);
       if (threads == 1) threshold = r.arrangement.separation.threshold;
       EXPECT_EQ(r.arrangement.separation.threshold, threshold);
-      RoundingHalves halves;
-      detail::rounded_cycles(r, threads, &halves);
-      EXPECT_TRUE(rounding_rules_keep_topology(r, halves, threads)) << operation_name(op);
+      EXPECT_TRUE(rounding_rules_keep_topology(r, threads)) << operation_name(op);
       EXPECT_EQ((to_output<ExactKernel, ExactKernel>(r, false, threads).rounded_valid), std::optional<bool>(true));
     }
   }
+}
+
+// Step 3's verdict is the rules' own: separation_rules_hold, deciding them again over the
+// fragments step 3 made (seen through the trace hook), agrees on stars the rules certify and
+// on stars with points ulps from the other's edges, where they refuse. With the rules off
+// (Options::rounding_rules), step 3 proves nothing, the result is the same, and to_output's
+// grid finds the same verdict.
+TEST(SeparationRules, StepThreesVerdictIsTheRulesOwn) {
+  std::mt19937_64 rng(test_seed(13));
+  int held = 0, refused = 0;
+  for (int i = 0; i < 12; ++i) {
+    const auto [a, b] = stars_with_points_near(rng, 400, i % 2 == 0 ? 0 : 1 + i % 5);
+    Options opt;
+    opt.op = i % 3 == 0 ? Operation::union_ : Operation::intersection;
+    opt.threads = 1 + i % 2;
+    bool again = false;
+    const BooleanResult<ExactKernel> r = boolean_op<ExactKernel>(a, b, opt, [&](Step s, const Arrangement<ExactKernel>& arr) {
+      if (s == Step::intersections) again = separation_rules_hold(arr, opt.threads);
+    });
+    const bool proved = r.arrangement.separation.threshold > 0;
+    EXPECT_EQ(again, proved) << "case " << i;
+    (proved ? held : refused) += 1;
+    opt.rounding_rules = false;
+    const BooleanResult<ExactKernel> plain = boolean_op<ExactKernel>(a, b, opt);
+    EXPECT_EQ(plain.arrangement.separation.threshold, 0) << "case " << i;
+    ASSERT_EQ(plain.cycles.size(), r.cycles.size()) << "case " << i;
+    for (std::size_t c = 0; c < r.cycles.size(); ++c) EXPECT_EQ(plain.cycles[c].vertices, r.cycles[c].vertices) << "case " << i;
+    EXPECT_EQ((to_output<ExactKernel, ExactKernel>(plain, false, 1).rounded_valid),
+              (to_output<ExactKernel, ExactKernel>(r, false, 1).rounded_valid))
+        << "case " << i;
+  }
+  std::printf("rules held %d, refused %d\n", held, refused);
+  EXPECT_GT(held, 0);
+  EXPECT_GT(refused, 0);
 }
 
 }  // namespace
