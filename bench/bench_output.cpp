@@ -20,7 +20,7 @@
 //   rounding_ratio (rounding_s + validity_s + certify_s) / op_s
 //   rules_s       what step 3 spends on the rounding certificate's rules N and C
 //                 (separation_rules.hpp): step 3 timed with them and without
-//                 (Options::rounding_rules), three times each per iteration, the difference
+//                 (Options::rounding_rules), five times each per iteration, the difference
 //                 of the medians (about 0 where the rules do not run; noise can make it < 0)
 //   rounding_all_ratio (rounding_s + validity_s + certify_s + rules_s) / (op_s - rules_s):
 //                 all that certified rounding costs, over the operation without it; issue
@@ -82,9 +82,9 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
     if (s == Step::vertex_rings) step3_start = Clock::now();
     if (s == Step::intersections) step3 = seconds_since(step3_start);
   };
-  const auto median_of_3 = [](std::array<double, 3> v) {
+  const auto median_of_5 = [](std::array<double, 5> v) {
     std::sort(v.begin(), v.end());
-    return v[1];
+    return v[2];
   };
   std::size_t digits = 0;
   for (auto _ : state) {
@@ -92,19 +92,19 @@ void BM_OutputCost(benchmark::State& state, WorkloadKind kind) {
     auto t = Clock::now();
     const BooleanResult<ExactKernel> r = boolean_op<ExactKernel>(w.a, w.b, opt, time_step3);
     op += seconds_since(t);
-    // Step 3 with the rules (this run's and two more) and without (three), alternately.
+    // Step 3 with the rules (this run's and four more) and without (five), alternately.
     {
-      std::array<double, 3> with{step3, 0, 0}, without{};
+      std::array<double, 5> with{step3}, without{};
       Options plain = opt;
       plain.rounding_rules = false;
-      for (std::size_t k = 0; k < 3; ++k) {
+      for (std::size_t k = 0; k < 5; ++k) {
         benchmark::DoNotOptimize(boolean_op<ExactKernel>(w.a, w.b, plain, time_step3).cycles.size());
         without[k] = step3;
-        if (k == 2) break;
+        if (k == 4) break;
         benchmark::DoNotOptimize(boolean_op<ExactKernel>(w.a, w.b, opt, time_step3).cycles.size());
         with[k + 1] = step3;
       }
-      rules += median_of_3(with) - median_of_3(without);
+      rules += median_of_5(with) - median_of_5(without);
     }
     t = Clock::now();
     Output out = to_output<ExactKernel, ExactKernel>(r, false, resolve_threads(opt.threads));
