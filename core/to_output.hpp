@@ -173,6 +173,8 @@ bool rounding_wants_halves(const BooleanResult<K>& r) {
 // across anything: from boxes in floating point (rounding_boxes.hpp: linear, decides
 // almost every result of well-separated vertices), then exactly (rounding_motion.hpp: cheap
 // when few vertices moved); otherwise one sweep over the rounded output, O(n log n).
+// `rounded`: each vertex's nearest doubles, as rounded_cycles makes them (the certificate
+// from step 3's rules takes each rounded point to lie in its crossing's box).
 template <Kernel K, Kernel V>
 bool is_valid_rounded_result_ogc(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded,
                                  const std::vector<std::vector<int>>& polygon_cycles, unsigned threads = 1,
