@@ -572,7 +572,9 @@ inline bool points_clear_of_edges(const std::vector<Point>& points, double half,
       }
     }
   }
-  const auto [tx, ty] = normal_widening(half, half, half, half);
+  // (Named, not bound: clang 14, the fuzzers' compiler, cannot capture structured bindings.)
+  const std::array<double, 2> widening = normal_widening(half, half, half, half);
+  const double tx = widening[0], ty = widening[1];
   const unsigned t = threads_for(edges.size(), threads);
   const std::size_t parts = t > 1 ? 8 * static_cast<std::size_t>(t) : 1;
   const std::size_t part_budget = budget / parts;
