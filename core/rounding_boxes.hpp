@@ -99,21 +99,23 @@ bool rounding_boxes_keep_topology(const BooleanResult<K>& r, const std::vector<s
 // the monotony of rounding (separation_rules_test checks it exactly).
 template <Kernel K>
 bool rounding_rules_keep_topology(const BooleanResult<K>& r, unsigned threads = 1) {
-  const Arrangement<K>& arr = r.arrangement;
-  const double big_t = arr.separation.threshold;
-  if constexpr (!std::is_same_v<typename K::Point, Point>) return false;  // never proved (CrossingSegments)
-  if (!(big_t > 0)) return false;
-  // Every point's box of half-size T/2 clear of the hull of every edge it does not end (the
-  // hull within T/2 of the segment): then the point is more than T from the edge.
-  const double half = detail::rounded_up(big_t / 2 * (1 + 0x1p-52));
-  std::vector<std::array<int, 2>> edges;
-  for (const PreparedPolygon& poly : arr.polygon) {
-    for (const auto& cycle : poly.cycles) {
-      for (std::size_t k = 0; k < cycle.size(); ++k) edges.push_back({cycle[k], cycle[(k + 1) % cycle.size()]});
+  if constexpr (!std::is_same_v<typename K::Point, Point>) {
+    return false;  // never proved (CrossingSegments)
+  } else {
+    const Arrangement<K>& arr = r.arrangement;
+    const double big_t = arr.separation.threshold;
+    if (!(big_t > 0)) return false;
+    // Every point's box of half-size T/2 clear of the hull of every edge it does not end (the
+    // hull within T/2 of the segment): then the point is more than T from the edge.
+    const double half = detail::rounded_up(big_t / 2 * (1 + 0x1p-52));
+    std::vector<std::array<int, 2>> edges;
+    for (const PreparedPolygon& poly : arr.polygon) {
+      for (const auto& cycle : poly.cycles) {
+        for (std::size_t k = 0; k < cycle.size(); ++k) edges.push_back({cycle[k], cycle[(k + 1) % cycle.size()]});
+      }
     }
+    return detail::points_clear_of_edges(arr.points, half, edges, threads);
   }
-  if constexpr (std::is_same_v<typename K::Point, Point>) return detail::points_clear_of_edges(arr.points, half, edges, threads);
-  return false;
 }
 
 }  // namespace mk
