@@ -14,11 +14,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <cmath>
 #include <vector>
 
 #include "core/boolean_op.hpp"
+#include "core/parallel.hpp"
 #include "core/rounding_boxes.hpp"
 
 namespace mk {
@@ -90,8 +92,10 @@ bool segment_meets_hull(const typename K::Vertex& p, const typename K::Vertex& q
 // vertices): no moved vertex's path meets an edge it is not on, and no moved edge's hull
 // meets a vertex not on it. False means "not certified" (the caller checks the rounded
 // output in full), not "invalid". `max_moved` bounds the work: beyond it, false at once.
+// `threads`: for the pass over every edge.
 template <Kernel K>
-bool rounding_keeps_topology(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded, std::size_t max_moved) {
+bool rounding_keeps_topology(const BooleanResult<K>& r, const std::vector<std::vector<Point>>& rounded, std::size_t max_moved,
+                             unsigned threads = 1) {
   struct Box {
     double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
     void add(const Point& p) {
@@ -250,16 +254,36 @@ bool rounding_keeps_topology(const BooleanResult<K>& r, const std::vector<std::v
     }
     return true;
   };
+  // The pass over every edge, in blocks of the edges numbered across the cycles (a result
+  // may be one cycle of 10^5 edges), split over the threads; a block stops as soon as any
+  // block has found a meeting. The verdict is the same on any number of threads.
+  std::vector<std::size_t> first_edge(r.cycles.size() + 1, 0);  // of each cycle, numbered across them
   for (std::size_t c = 0; c < r.cycles.size(); ++c) {
-    const std::vector<Point>& pts = rounded[c];
-    const std::size_t n = pts.size();
-    if (n < 2) continue;
-    for (std::size_t k = 0; k < (n == 2 ? 1 : n); ++k) {
-      const std::size_t l = k + 1 == n ? 0 : k + 1;
-      if (!far(pts[k], pts[l]) && !near_edge(edge_at(c, k))) return false;
-    }
+    const std::size_t n = rounded[c].size();
+    first_edge[c + 1] = first_edge[c] + (n < 2 ? 0 : n == 2 ? 1 : n);
   }
-  return true;
+  const std::size_t num_edges = first_edge.back();
+  std::atomic<bool> met{false};
+  const auto block = [&](std::size_t begin, std::size_t end) {
+    constexpr std::size_t kCheckEvery = 4096;  // edges between looks at the other blocks' verdict
+    std::size_t c = static_cast<std::size_t>(std::upper_bound(first_edge.begin(), first_edge.end(), begin) - first_edge.begin()) - 1;
+    for (std::size_t e = begin; e < end; ++c) {
+      const std::vector<Point>& pts = rounded[c];
+      const std::size_t n = pts.size();
+      const std::size_t stop = std::min(end, first_edge[c + 1]);
+      for (std::size_t k = e - first_edge[c]; e < stop; ++e, ++k) {
+        const std::size_t l = k + 1 == n ? 0 : k + 1;
+        if (!far(pts[k], pts[l]) && !near_edge(edge_at(c, k))) {
+          met.store(true, std::memory_order_relaxed);
+          return;
+        }
+        if (e % kCheckEvery == 0 && met.load(std::memory_order_relaxed)) return;
+      }
+    }
+  };
+  const unsigned t = threads_for(num_edges, threads);
+  run_blocks(t, num_edges, t, block);
+  return !met.load();
 }
 
 }  // namespace mk

@@ -197,11 +197,11 @@ bool is_valid_rounded_result_ogc(const BooleanResult<K>& r, const std::vector<st
       }
     }
     const bool few_moved = crossings <= few && std::is_same_v<typename K::Point, Point>;
-    if (few_moved && rounding_keeps_topology(r, rounded, few)) return true;
+    if (few_moved && rounding_keeps_topology(r, rounded, few, threads)) return true;
     if constexpr (VertexBoxes<K>) {
       if (rounding_boxes_keep_topology(r, rounded, polygon_cycles, threads, halves)) return true;
     }
-    if (!few_moved && rounding_keeps_topology(r, rounded, few)) return true;
+    if (!few_moved && rounding_keeps_topology(r, rounded, few, threads)) return true;
   }
   std::vector<Point> pts;
   std::vector<int> slot;

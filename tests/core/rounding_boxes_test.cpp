@@ -21,6 +21,7 @@
 #include "core/boolean_op.hpp"
 #include "core/ogc_validity.hpp"
 #include "core/rounding_boxes.hpp"
+#include "core/rounding_motion.hpp"
 #include "core/to_output.hpp"
 #include "tests/core/rounding_cases.hpp"
 
@@ -418,15 +419,19 @@ TEST(RoundingBoxes, PointsClearOfEdgesNeverClearsWhatMeets) {
 // triangles outside it, each with an edge along the ring's tangent at a ring point p and a
 // few ulps from p (p pokes through it or not: a cap of three points within ulps of each
 // other, which rounding may collapse). The certificate's verdict (what to_output reports)
-// must be the full check's, valid or not.
+// must be the full check's, valid or not. One ring in four has 20000 points, enough for the
+// certificate's pass over the edges to split over two threads (the caps then fall in
+// different blocks): its verdict must not depend on the number of threads.
 TEST(RoundingBoxes, CrossingsOnOppositeSidesAgreeWithTheFullCheck) {
   std::mt19937_64 rng(test_seed(71));
   std::uniform_real_distribution<double> u(0, 1);
-  int valid = 0, invalid = 0, cases = 0;
+  int valid = 0, invalid = 0, cases = 0, large_valid = 0, large_invalid = 0;
   for (int i = 0; i < 60; ++i) {
     Polygon ring;
     ring.rings.emplace_back();
-    const std::size_t n = 3000;
+    const bool large = i % 4 == 0;
+    const std::size_t n = large ? 20000 : 3000;
+    static_assert(20000 > kParallelWork);
     for (std::size_t k = 0; k < n; ++k) {
       const double t = 2 * std::numbers::pi * static_cast<double>(k) / n;
       const double radius = 10 * (1 + 0.05 * u(rng));
@@ -471,12 +476,25 @@ TEST(RoundingBoxes, CrossingsOnOppositeSidesAgreeWithTheFullCheck) {
       ASSERT_EQ((to_output<ExactKernel, ExactKernel>(r, false).rounded_valid), std::optional<bool>(v.full))
           << "case " << i << " op " << operation_name(op);
       (v.full ? valid : invalid) += 1;
+      if (large) {
+        ASSERT_EQ((to_output<ExactKernel, ExactKernel>(r, false, 2).rounded_valid), std::optional<bool>(v.full))
+            << "case " << i << " op " << operation_name(op);
+        const auto rounded = round_result(r);
+        const std::size_t few = kFewCrossingsForExactCertificate;
+        const bool one = rounding_keeps_topology(r, rounded, few, 1);
+        ASSERT_EQ(rounding_keeps_topology(r, rounded, few, 2), one) << "case " << i << " op " << operation_name(op);
+        ASSERT_TRUE(!one || v.full) << "case " << i << " op " << operation_name(op);
+        (v.full ? large_valid : large_invalid) += 1;
+      }
     }
   }
-  std::printf("cases %d: valid %d, invalid %d\n", cases, valid, invalid);
+  std::printf("cases %d: valid %d, invalid %d; of 20000 points: valid %d, invalid %d\n", cases, valid, invalid, large_valid,
+              large_invalid);
   EXPECT_GT(cases, 150);
   EXPECT_GT(valid, 0);
   EXPECT_GT(invalid, 0);
+  EXPECT_GT(large_valid, 0);
+  EXPECT_GT(large_invalid, 0);
 }
 }  // namespace
 }  // namespace mk
