@@ -103,39 +103,63 @@ std::vector<std::vector<Point>> rounded_cycles(const BooleanResult<K>& r, unsign
     halves->first = first;
     halves->sizes.resize(work);
   }
-  // Each part walks its run of vertices, calling at(c, k) for each, and asks for the vertex
-  // `ahead` places on to be fetched: in cycle order the crossings are scattered over the
-  // arrangement's array, and once rounding got fast (the extended-precision stage of
+  // Each part walks its run of vertices, calling at(id, out, i) for each (its id, where its
+  // rounding goes and its number across the cycles), and asks for the vertex `ahead` places
+  // on to be fetched: in cycle order the crossings are scattered over the arrangement's
+  // array, and once rounding got fast (the extended-precision stage of
   // crossing_rounding.hpp) waiting for them was most of its time (star 1e4, one thread:
-  // 21 ms to 14 ms).
+  // 21 ms to 14 ms). The walk goes a cycle at a time with its arrays at hand.
   constexpr std::size_t ahead = 16;
   const auto walk = [&](auto&& at) {
     run_tasks(t, parts, [&](std::size_t part) {
       const std::size_t lo = work * part / parts, hi = work * (part + 1) / parts;
+      if (lo >= hi) return;  // (no cycle may hold vertex lo)
       std::size_t c = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), lo) - first.begin()) - 1;
+      // The cycle of the vertex `ahead` places on, its ids and the numbers it spans.
       std::size_t c_ahead = c;
-      for (std::size_t i = lo; i < hi; ++i) {
-        while (i >= first[c + 1]) ++c;
-        if (i + ahead < hi) {
-          while (i + ahead >= first[c_ahead + 1]) ++c_ahead;
-          r.arrangement.prefetch(r.cycles[c_ahead].vertices[i + ahead - first[c_ahead]]);
+      const int* ids_ahead = r.cycles[c].vertices.data();
+      std::size_t from_ahead = first[c], to_ahead = first[c + 1];
+      for (std::size_t i = lo; i < hi; ++c) {
+        const int* ids = r.cycles[c].vertices.data();
+        Point* out = rounded[c].data();
+        const std::size_t from = first[c], to = std::min(hi, first[c + 1]);
+        for (; i < to; ++i) {
+          if (i + ahead < hi) {
+            while (i + ahead >= to_ahead) {
+              ++c_ahead;
+              ids_ahead = r.cycles[c_ahead].vertices.data();
+              from_ahead = to_ahead;
+              to_ahead = first[c_ahead + 1];
+            }
+            r.arrangement.prefetch(ids_ahead[i + ahead - from_ahead]);
+          }
+          at(ids[i - from], out[i - from], i);
         }
-        at(c, i - first[c]);
       }
     });
   };
   if constexpr (VertexBoxes<K>) {
     if (halves) {
-      walk([&](std::size_t c, std::size_t k) {
-        const int id = r.cycles[c].vertices[k];
+      walk([&](int id, Point& out, std::size_t i) {
         const auto v = r.vertex(id);
-        rounded[c][k] = K::approx(v);
-        halves->sizes[first[c] + k] = rounding_half_sizes(r, id, v, rounded[c][k]);
+        out = K::approx(v);
+        halves->sizes[i] = rounding_half_sizes(r, id, v, out);
       });
       return rounded;
     }
   }
-  walk([&](std::size_t c, std::size_t k) { rounded[c][k] = K::approx(r.vertex(r.cycles[c].vertices[k])); });
+  // Input points of doubles are copied from where they are stored: through the vertex made
+  // of one and its approximation the compiler (GCC 12) stored the point's halves apart and
+  // loaded them as one, a stall that was most of blob 1e5's rounding.
+  walk([&](int id, Point& out, std::size_t) {
+    if constexpr (std::is_same_v<typename K::Point, Point>) {
+      if (r.arrangement.is_input_point(id)) {
+        out = r.arrangement.points[static_cast<std::size_t>(id)];
+        return;
+      }
+    }
+    out = K::approx(r.vertex(id));
+  });
   return rounded;
 }
 

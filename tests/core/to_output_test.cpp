@@ -1,10 +1,16 @@
 // Output assembly: irreducible polygons into OGC polygons-with-holes through the inclusion
 // forest, non-regular parts, and the exact validity check of rounded output.
+#include <gmpxx.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
 
 #include "arithmetic/kernels/exact_kernel.hpp"
 #include "core/to_output.hpp"
 #include "named_cases.hpp"
+#include "tests/core/rounding_cases.hpp"
 
 namespace mk::test {
 namespace {
@@ -75,6 +81,67 @@ TEST(ToOutput, RoundedValidityIsCheckedExactly) {
   // A near-degenerate case: the rounded point 0.1 + 0.2 lies off the line through its
   // neighbours, which only an exact test sees.
   EXPECT_TRUE(is_valid_rounded_output<ExactKernel>({{{0, 0}, {0.1 + 0.2, 0.3}, {1, 1}, {0, 1}}}));
+}
+
+// Whether d is a nearest double to q (ties either way), decided exactly against its two
+// neighbours: independent of how the kernel rounds.
+bool is_nearest_double(double d, const mpq_class& q) {
+  if (!std::isfinite(d)) return false;
+  const mpq_class gap = abs(q - mpq_class(d));
+  for (const double n : {std::nextafter(d, -HUGE_VAL), std::nextafter(d, HUGE_VAL)}) {
+    if (std::isfinite(n) && abs(q - mpq_class(n)) < gap) return false;
+  }
+  return true;
+}
+
+// rounded_cycles walks the cycles' vertices in parts numbered across the cycles, fetching
+// ahead: on one thread and on two, with and without the boxes' half-sizes, every vertex of
+// every cycle gets the nearest doubles of its exact position (checked exactly), for results
+// of many small cycles (two stars) and of one long cycle (a ring of 20000 points and a
+// triangle), each more vertices than a phase needs to go on threads.
+TEST(ToOutput, RoundedCyclesAreTheNearestDoublesOnAnyNumberOfThreads) {
+  std::mt19937_64 rng(test_seed(29));
+  std::uniform_real_distribution<double> u(0, 1);
+  const auto ring = [&](std::size_t n, double spread, double turn) {
+    std::vector<Point> pts;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double t = 2 * std::numbers::pi * static_cast<double>(k) / static_cast<double>(n) + turn;
+      const double radius = 10 * (1 + spread * u(rng));
+      pts.push_back({radius * std::cos(t), radius * std::sin(t)});
+    }
+    return pts;
+  };
+  struct Input {
+    Polygon a, b;
+    Operation op;
+  };
+  std::vector<Input> inputs;
+  inputs.push_back({island({ring(8000, 0.6, 0)}), island({ring(8000, 0.6, 0.001)}), Operation::symmetric_difference});
+  inputs.push_back({island({ring(20000, 0.05, 0)}), island({{{0, 0}, {30, 1}, {29, 3}}}), Operation::difference});
+  for (const auto& [a, b, op] : inputs) {
+    Options opt;
+    opt.op = op;
+    const BooleanResult<ExactKernel> r = boolean_op<ExactKernel>(a, b, opt);
+    std::size_t vertices = 0;
+    for (const auto& c : r.cycles) vertices += c.vertices.size();
+    ASSERT_GT(vertices, kParallelWork);
+    RoundingHalves halves;
+    const std::vector<std::vector<std::vector<Point>>> made{detail::rounded_cycles(r, 1), detail::rounded_cycles(r, 2),
+                                                            detail::rounded_cycles(r, 2, &halves)};
+    for (const auto& rounded : made) {
+      ASSERT_EQ(rounded.size(), r.cycles.size());
+      for (std::size_t c = 0; c < r.cycles.size(); ++c) {
+        ASSERT_EQ(rounded[c].size(), r.cycles[c].vertices.size());
+        for (std::size_t k = 0; k < rounded[c].size(); ++k) {
+          const RationalPoint e = ExactKernel::exact(r.vertex(r.cycles[c].vertices[k]));
+          ASSERT_TRUE(is_nearest_double(rounded[c][k].x, e.x) && is_nearest_double(rounded[c][k].y, e.y))
+              << "cycle " << c << " vertex " << k << " of " << r.cycles.size() << " cycles";
+        }
+      }
+    }
+    EXPECT_EQ(halves.sizes.size(), vertices);
+    std::printf("%zu cycles, %zu vertices, %d crossings\n", r.cycles.size(), vertices, r.arrangement.num_crossings());
+  }
 }
 
 }  // namespace
