@@ -4,7 +4,6 @@
 // Preconditions: none.
 #include <CLI/CLI.hpp>
 
-#include <climits>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -17,10 +16,7 @@
 #include "cli/batch.hpp"
 #include "cli/command.hpp"
 #include "cli/exit_codes.hpp"
-
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
+#include "cli/heap.hpp"
 
 namespace mk::cli {
 namespace {
@@ -315,15 +311,9 @@ int run(int argc, char** argv) {
 }  // namespace mk::cli
 
 int main(int argc, char** argv) {
-#if defined(__GLIBC__)
-  // The command runs one operation or one batch and exits: memory an operation frees
-  // between its phases is kept for the next phase (and the next line of a batch) instead of
-  // going back to the kernel and being faulted in again (glibc maps blocks over 32 MB apart
-  // and unmaps them when freed). Blob 1e6 end to end: 157k -> 68k page faults, the
-  // operation about 20% faster; the peak resident set about 20% higher (bench/README.md,
-  // "The command end to end against GEOS"). A library user chooses this for their own process.
-  mallopt(M_MMAP_MAX, 0);
-  mallopt(M_TRIM_THRESHOLD, INT_MAX);
-#endif
+  // Freed memory kept, and the heap's top advised for huge pages (cli/heap.hpp): blob 1e6 end
+  // to end 1.3-1.8 s -> 0.5-0.9 s where page faults are dear (bench/README.md, "The
+  // command's heap").
+  mk::cli::prepare_heap();
   return mk::cli::run(argc, argv);
 }
