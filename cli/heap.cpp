@@ -22,6 +22,7 @@
 
 namespace mk::cli {
 
+#if defined(__GLIBC__) && !defined(MK_HEAP_ASAN)
 namespace {
 
 // Whether the kernel counts every mapping against a commit limit (vm.overcommit_memory 2).
@@ -32,6 +33,7 @@ bool strict_overcommit() {
 }
 
 }  // namespace
+#endif
 
 HeapReservation prepare_heap(std::size_t bytes) {
   HeapReservation h;
